@@ -1,0 +1,12 @@
+#pragma once
+/// The in-house discrete element engine as a cairn backend ("dem").
+
+#include "backend/backend.hpp"
+#include "registry.hpp"
+
+namespace cairn {
+
+/// registry entry of the in-house engine
+BackendInfo dem_backend_info();
+
+}  // namespace cairn

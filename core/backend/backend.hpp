@@ -1,0 +1,76 @@
+#pragma once
+/// The one interface every backend implements (in-house DEM, Bullet, ODE, MuJoCo).
+/// A backend owns all of its mutable state; the scene it is built from is read-only.
+
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "backend/capabilities.hpp"
+#include "geometry/types.hpp"
+#include "scene/scene.hpp"
+
+namespace cairn {
+
+/// Options of one run that are not part of the scene file.
+struct RunOptions {
+    std::string contact_mode = "rigid";   ///< reference engines: "rigid" or "matched"
+};
+
+/// Pose and velocity of one free block, world frame.
+struct BlockState {
+    Vec3 position = Vec3::Zero();          ///< centre of mass, m
+    Quat orientation = Quat::Identity();   ///< rotation block frame → world
+    Vec3 velocity = Vec3::Zero();          ///< centre-of-mass velocity, m/s
+    Vec3 angular_velocity = Vec3::Zero();  ///< rad/s
+};
+
+/// Energy bookkeeping, J. balance_error() closes to ~0 for a consistent integrator.
+struct Energies {
+    double kinetic = 0.0;      ///< J
+    double potential = 0.0;    ///< gravity, J (zero at the world origin)
+    double contact = 0.0;      ///< stored in contact springs, J
+    double strain = 0.0;       ///< stored in deformable blocks, J
+    double dissipated = 0.0;   ///< friction, contact and mass/stiffness damping so far, J
+    double external = 0.0;     ///< work done by loads so far, J
+    /// total energy at t = 0 minus total now, with dissipation and external work accounted, J
+    double total() const { return kinetic + potential + contact + strain + dissipated - external; }
+};
+
+/// What a backend reports at one instant.
+struct Sample {
+    double t = 0.0;                   ///< s
+    std::vector<Vec3> probes;         ///< world positions of Scene::probes, m
+    std::vector<BlockState> blocks;   ///< one per free block, in Scene::blocks order
+    Energies energy;
+    int contacts = 0;                 ///< active contact points (or engine contacts)
+};
+
+/// Result of advancing one step.
+enum class StepStatus { ok, unstable };
+
+/// A simulation engine behind the common scene interface.
+class Backend {
+public:
+    virtual ~Backend() = default;
+    /// registry name ("dem", "bullet", ...)
+    virtual std::string name() const = 0;
+    /// engine name and version, for run.json
+    virtual std::string engine_version() const = 0;
+    /// build the model of `scene`; throws cairn::Error naming what cannot be represented
+    virtual void build(const Scene& scene, const RunOptions& options) = 0;
+    /// the time step used, s
+    virtual double time_step() const = 0;
+    /// the critical (stability-limit) step estimated for this model, s; 0 when unknown
+    virtual double critical_step() const = 0;
+    /// advance one time step
+    virtual StepStatus step() = 0;
+    /// the current state
+    virtual Sample sample() const = 0;
+    /// why the last step was unstable (empty otherwise)
+    virtual std::string failure() const { return {}; }
+    /// approximations made for this scene and the parameters actually used, as "key: value" lines
+    virtual std::vector<std::string> notes() const { return {}; }
+};
+
+}  // namespace cairn
