@@ -1,0 +1,159 @@
+#include "run/runner.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+
+#include "error.hpp"
+#include "geometry/hexahedron.hpp"
+
+namespace cairn {
+
+namespace {
+
+/// energy growth beyond this fraction of the scale has no source: the run is unstable
+constexpr double kGrowthBound = 1.0;
+/// a balance error beyond this fraction of the scale is flagged as drift (the run goes on)
+constexpr double kDriftBound = 0.01;
+/// the energy scale never falls below this, J (keeps the bounds meaningful for a scene at rest)
+constexpr double kMinScale = 1.0;
+/// wall time between progress calls, s
+constexpr double kProgressEvery = 0.5;
+
+/// Σ over free blocks of m·g·(block diameter): the energy a block can trade with gravity, J
+double potential_scale(const Scene& scene) {
+    const double g = scene.gravity.norm();
+    double sum = 0.0;
+    for (const auto& b : scene.blocks) {
+        if (b.fixed) continue;
+        const double density = (b.material >= 0 && b.material < int(scene.materials.size()))
+                                   ? scene.materials[b.material].density
+                                   : 0.0;
+        double diameter = 0.0;
+        for (const auto& p : b.corners)
+            for (const auto& q : b.corners) diameter = std::max(diameter, (p - q).norm());
+        sum += mass_properties(b.corners, density).mass * g * diameter;
+    }
+    return sum;
+}
+
+bool finite(const Vec3& v) { return v.allFinite(); }
+
+/// empty if every number in the sample is finite, otherwise what is not
+std::string non_finite(const Sample& s, const Scene& scene) {
+    const Energies& e = s.energy;
+    for (double x : {s.t, e.kinetic, e.potential, e.contact, e.strain, e.dissipated, e.external})
+        if (!std::isfinite(x)) return "an energy or the time is not finite (NaN or inf)";
+    for (size_t i = 0; i < s.probes.size(); ++i)
+        if (!finite(s.probes[i]))
+            return "probe " + (i < scene.probes.size() ? scene.probes[i].name : std::to_string(i)) +
+                   " position is not finite (NaN or inf)";
+    for (const auto& b : s.blocks)
+        if (!finite(b.position) || !b.orientation.coeffs().allFinite() || !finite(b.velocity) ||
+            !finite(b.angular_velocity))
+            return "a block state is not finite (NaN or inf)";
+    return {};
+}
+
+std::string format_g(const char* fmt, double x) {
+    char buf[64];
+    std::snprintf(buf, sizeof buf, fmt, x);
+    return buf;
+}
+
+/// the message of an unstable run: time, reason, time step and critical step
+std::string unstable_message(double t, const std::string& why, double dt, double critical) {
+    std::string m = "unstable at t = " + format_g("%.6g", t) + " s: " +
+                    (why.empty() ? std::string("the backend reported an unstable step") : why) +
+                    "; time step " + format_g("%.2e", dt) + " s, ";
+    m += critical > 0.0 ? "critical step " + format_g("%.2e", critical) + " s"
+                        : std::string("critical step unknown");
+    return m + " (run with a smaller dt or dt = \"auto\")";
+}
+
+}  // namespace
+
+RunResult run_scene(Backend& backend, const Scene& scene, const RunOptions& options,
+                    const ProgressFn& progress) {
+    backend.build(scene, options);
+
+    RunResult r;
+    r.dt = backend.time_step();
+    r.critical_step = backend.critical_step();
+    if (!(r.dt > 0.0) || !std::isfinite(r.dt))
+        throw Error("backend " + backend.name() + " gave time step " + format_g("%g", r.dt) +
+                    " s for scene " + scene.name + " (must be positive and finite)");
+    const double interval = scene.run.output_interval;
+    r.output_every = std::max(1, int(std::lround(interval / r.dt)));
+    const long long total_steps =
+        std::max(0LL, (long long)std::ceil(scene.run.duration / r.dt - 1e-9));
+
+    const double gravity_scale = potential_scale(scene);
+    double motion_scale = 0.0;   // max over earlier samples of |kinetic| + |contact| + |strain|, J
+    double total0 = 0.0;
+
+    // check one sample; returns the reason if the run must stop
+    auto check = [&](const Sample& s) -> std::string {
+        if (auto bad = non_finite(s, scene); !bad.empty()) return bad;
+        const Energies& e = s.energy;
+        const double motion = std::abs(e.kinetic) + std::abs(e.contact) + std::abs(e.strain);
+        if (r.samples.empty()) {
+            total0 = e.total();
+            motion_scale = motion;
+        }
+        // the motion part of the scale comes from the samples before this one: energy that grows
+        // without a source must not raise the bar it is measured against
+        const double scale =
+            std::max(kMinScale, motion_scale + std::abs(e.external) + gravity_scale);
+        motion_scale = std::max(motion_scale, motion);
+        const double err = e.total() - total0;
+        r.max_balance_error = std::max(r.max_balance_error, std::abs(err) / scale);
+        if (std::abs(err) > kDriftBound * scale) r.energy_drift = true;
+        if (err > kGrowthBound * scale)
+            return "energy growing without a source (balance error " + format_g("%.3g", err) +
+                   " J against an energy scale of " + format_g("%.3g", scale) + " J)";
+        return {};
+    };
+
+    const auto start = std::chrono::steady_clock::now();
+    auto elapsed = [&] {
+        return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    };
+    double next_progress = kProgressEvery;
+
+    // record a sample; false (with the message set) when it shows the run is unstable
+    auto record = [&](long long step) {
+        Sample s = backend.sample();
+        const std::string why = check(s);
+        const bool finite_sample = why.empty() || non_finite(s, scene).empty();
+        if (finite_sample) r.samples.push_back(std::move(s));
+        if (why.empty()) return true;
+        r.status = RunStatus::unstable;
+        r.message = unstable_message(double(step) * r.dt, why, r.dt, r.critical_step);
+        return false;
+    };
+
+    bool ok = record(0);
+    for (long long k = 1; ok && k <= total_steps; ++k) {
+        const StepStatus st = backend.step();
+        r.steps = k;
+        if (st == StepStatus::unstable) {
+            r.status = RunStatus::unstable;
+            r.message = unstable_message(double(k) * r.dt, backend.failure(), r.dt, r.critical_step);
+            // keep the state at failure when it is still finite: it shows what went wrong
+            Sample s = backend.sample();
+            if (non_finite(s, scene).empty()) r.samples.push_back(std::move(s));
+            break;
+        }
+        if (k % r.output_every == 0 || k == total_steps) ok = record(k);
+        if (progress && elapsed() >= next_progress) {
+            progress(double(k) / double(total_steps));
+            next_progress = elapsed() + kProgressEvery;
+        }
+    }
+    r.wall_seconds = elapsed();
+    return r;
+}
+
+}  // namespace cairn
