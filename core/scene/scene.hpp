@@ -114,6 +114,7 @@ struct RunControl {
 /// The analytic reference the scene is meant to match (read by the compare layer).
 struct ReferenceDef {
     std::string kind;                      ///< e.g. "rest", "impact", "slide", "stick", "housner"
+    int block = -1;                        ///< index into Scene::blocks of the block it describes
     std::map<std::string, double> values;  ///< named parameters of the reference, SI units
 };
 

@@ -1,0 +1,104 @@
+#include "scene/scene_io.hpp"
+
+#include <fstream>
+#include <sstream>
+
+#include "error.hpp"
+#include "scene/scene_read.hpp"
+#include "scene/toml_reader.hpp"
+
+namespace cairn {
+
+namespace {
+
+std::string trim(const std::string& s) {
+    auto b = s.find_first_not_of(" \t");
+    if (b == std::string::npos) return {};
+    auto e = s.find_last_not_of(" \t");
+    return s.substr(b, e - b + 1);
+}
+
+// a TOML basic string holding `text`
+std::string quoted(const std::string& text) {
+    std::string out = "\"";
+    for (char c : text) {
+        if (c == '"' || c == '\\') out += '\\';
+        out += c;
+    }
+    return out + "\"";
+}
+
+// set the override into the document at its dotted path, creating tables on the way
+void apply_override(toml::table& root, const Override& o, scene_detail::Sources& src) {
+    const std::string origin = "--set " + o.key;
+    // the value as TOML; if that fails, the text as a string
+    std::string text = "v = " + o.value;
+    toml::table parsed;
+    try {
+        parsed = toml::parse(text, std::string(origin));
+    } catch (const toml::parse_error&) {
+        text = "v = " + quoted(o.value);
+        parsed = toml::parse(text, std::string(origin));
+    }
+    src.add(origin, text);
+
+    std::vector<std::string> parts;
+    std::stringstream ss(o.key);
+    for (std::string part; std::getline(ss, part, '.');) parts.push_back(part);
+    if (o.key.back() == '.') parts.push_back("");
+    toml::table* t = &root;
+    std::string path;
+    for (std::size_t i = 0; i < parts.size(); ++i) {
+        if (parts[i].empty()) throw Error(origin + ": empty component in the key path");
+        path += (path.empty() ? "" : ".") + parts[i];
+        if (i + 1 == parts.size()) break;
+        toml::node* next = t->get(parts[i]);
+        if (!next) {
+            t->insert(parts[i], toml::table{});
+            next = t->get(parts[i]);
+            src.add_created_table(next->as_table(), o.key);
+        }
+        if (!next->is_table())
+            throw Error(origin + ": " + path + " is not a table, so " + o.key + " cannot be set");
+        t = next->as_table();
+    }
+    t->insert_or_assign(parts.back(), std::move(*parsed.get("v")));
+}
+
+}  // namespace
+
+Override parse_override(const std::string& text) {
+    auto eq = text.find('=');
+    if (eq == std::string::npos)
+        throw Error("--set " + text + ": expected key=value");
+    Override o{trim(text.substr(0, eq)), trim(text.substr(eq + 1))};
+    if (o.key.empty()) throw Error("--set " + text + ": the key before '=' is empty");
+    return o;
+}
+
+Scene load_scene(const std::string& path, const std::vector<Override>& overrides) {
+    std::ifstream in(path, std::ios::binary);
+    if (!in) throw Error(path + ": cannot open scene file");
+    std::ostringstream text;
+    text << in.rdbuf();
+    if (in.bad()) throw Error(path + ": cannot read scene file");
+    return parse_scene(text.str(), path, overrides);
+}
+
+Scene parse_scene(const std::string& toml_text, const std::string& source,
+                  const std::vector<Override>& overrides) {
+    scene_detail::Sources src;
+    src.add(source, toml_text);
+    toml::table root;
+    try {
+        root = toml::parse(toml_text, std::string(source));
+    } catch (const toml::parse_error& e) {
+        const auto& at = e.source().begin;
+        throw Error(source + ":" + std::to_string(at.line) + ":" + std::to_string(at.column) +
+                    ": TOML syntax error: " + std::string(e.description()));
+    }
+    for (const auto& o : overrides) apply_override(root, o, src);
+    return scene_detail::read_scene(src, root, source);
+}
+
+}  // namespace cairn
