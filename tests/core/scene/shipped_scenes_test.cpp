@@ -4,6 +4,7 @@
 
 #include <filesystem>
 
+#include "geometry/hexahedron.hpp"
 #include "scene/scene_io.hpp"
 
 using namespace cairn;
@@ -18,4 +19,74 @@ TEST_CASE("every shipped scene validates", "[scene][scenarios]") {
         ++count;
     }
     CHECK(count >= 3);   // at least the paper's stability and friction cases
+}
+
+namespace {
+Scene paper(const std::string& name) {
+    return load_scene(std::string(CAIRN_SOURCE_DIR) + "/scenarios/paper/" + name + ".toml");
+}
+// lowest and highest z of a block's corners in the world at t = 0
+std::pair<double, double> z_range(const BlockDef& b) {
+    double lo = 1e300, hi = -1e300;
+    for (const auto& c : b.corners) {
+        double z = (b.position + b.orientation * c).z();
+        lo = std::min(lo, z);
+        hi = std::max(hi, z);
+    }
+    return {lo, hi};
+}
+}  // namespace
+
+TEST_CASE("the paper scenes start A where physics.md puts it", "[scene][scenarios]") {
+    for (const char* name : {"stability", "friction_slide", "friction_stick", "impact"}) {
+        INFO(name);
+        Scene s = paper(name);
+        REQUIRE(s.block_index("A") == 0);
+        REQUIRE(s.block_index("B") == 1);
+        CHECK(s.blocks[1].fixed);
+        CHECK(z_range(s.blocks[1]).second == Approx(0.0).margin(1e-12));   // B's top at z = 0
+        double gap = std::string(name) == "impact" ? 0.1 : 0.0;
+        CHECK(z_range(s.blocks[0]).first == Approx(gap).margin(1e-12));
+        CHECK(s.reference->block == 0);
+        CHECK(s.probes.at(0).name == "node10");
+    }
+}
+
+TEST_CASE("the friction scenes push with H = 0.5 W of block A", "[scene][scenarios]") {
+    for (const char* name : {"friction_slide", "friction_stick"}) {
+        Scene s = paper(name);
+        const BlockDef& a = s.blocks[0];
+        double m = mass_properties(a.corners, s.materials[a.material].density).mass;
+        REQUIRE(s.loads.size() == 1);
+        // the file writes H with all its digits: equal to 0.5 m g to rounding
+        CHECK(s.loads[0].force.x() == Approx(0.5 * m * 9.81).epsilon(1e-12));
+        CHECK(s.reference->values.at("force") == s.loads[0].force.x());
+    }
+    CHECK(paper("friction_slide").contact.friction == 0.4);
+    CHECK(paper("friction_stick").contact.friction == 0.6);
+    CHECK(paper("friction_stick").loads[0].ramp == 0.2);
+}
+
+TEST_CASE("the rocking scenes stand on their +x edge, leaning back toward upright",
+          "[scene][scenarios]") {
+    struct Case { const char* name; double half_width; };
+    for (Case c : {Case{"rocking", 0.35}, Case{"rocking_slender", 0.1}}) {
+        INFO(c.name);
+        Scene s = paper(c.name);
+        const BlockDef& a = s.blocks[0];
+        Vec3 com = a.position + a.orientation * mass_properties(a.corners, 2600).centre;
+        // the two +x bottom corners (1, 2) rest on B's top at x = +half_width
+        for (int i : {1, 2}) {
+            Vec3 p = a.position + a.orientation * a.corners[i];
+            CHECK(p.z() == Approx(0.0).margin(1e-12));
+            CHECK(p.x() == Approx(c.half_width).margin(1e-12));
+        }
+        // the −x side is lifted and no corner is below B's top
+        CHECK(z_range(a).first == Approx(0.0).margin(1e-12));
+        CHECK((a.position + a.orientation * a.corners[0]).z() > 0.01);
+        // centre of mass on the inner side of the pivot: gravity turns A back
+        CHECK(com.x() < c.half_width);
+        Eigen::AngleAxisd aa(a.orientation);
+        CHECK(aa.angle() == Approx(s.reference->values.at("theta0")).epsilon(1e-12));
+    }
 }
