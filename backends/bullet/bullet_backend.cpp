@@ -1,0 +1,321 @@
+#include "bullet/bullet_backend.hpp"
+
+#include <btBulletDynamicsCommon.h>
+
+#include <cmath>
+#include <memory>
+#include <sstream>
+
+#include "engine_settings.hpp"
+#include "error.hpp"
+#include "rigid_blocks.hpp"
+
+namespace cairn {
+
+std::vector<FeatureSupport> bullet_capabilities();
+
+namespace {
+
+btVector3 bt(const Vec3& v) { return {v.x(), v.y(), v.z()}; }
+Vec3 eig(const btVector3& v) { return {v.x(), v.y(), v.z()}; }
+Quat eig(const btQuaternion& q) { return Quat(q.w(), q.x(), q.y(), q.z()); }
+btQuaternion bt(const Quat& q) { return {q.x(), q.y(), q.z(), q.w()}; }
+
+// the per-pair contact parameters, set on every manifold point before the solver runs
+struct PairLaw {
+    double friction = 0.0;
+    double restitution = 0.0;
+    bool matched = false;
+};
+
+// a world that writes the scene's friction, restitution and (matched mode) spring into every
+// contact point, so that no pair-combination rule of Bullet changes them
+class CairnWorld : public btDiscreteDynamicsWorld {
+public:
+    using btDiscreteDynamicsWorld::btDiscreteDynamicsWorld;
+    const Scene* scene = nullptr;
+    const std::vector<RigidBlock>* blocks = nullptr;
+    PairLaw law;
+
+protected:
+    void solveConstraints(btContactSolverInfo& info) override {
+        btDispatcher* d = getDispatcher();
+        for (int m = 0; m < d->getNumManifolds(); ++m) {
+            btPersistentManifold* pm = d->getManifoldByIndexInternal(m);
+            const auto& a = (*blocks)[pm->getBody0()->getUserIndex()];
+            const auto& b = (*blocks)[pm->getBody1()->getUserIndex()];
+            PointSpring s;
+            if (law.matched) s = a.fixed ? matched_point_spring(*scene, b, &a) : matched_point_spring(*scene, a, &b);
+            for (int i = 0; i < pm->getNumContacts(); ++i) {
+                btManifoldPoint& p = pm->getContactPoint(i);
+                p.m_combinedFriction = law.friction;
+                p.m_combinedRestitution = law.restitution;
+                p.m_combinedRollingFriction = 0.0;
+                p.m_combinedSpinningFriction = 0.0;
+                if (law.matched) {
+                    p.m_contactPointFlags |= BT_CONTACT_FLAG_CONTACT_STIFFNESS_DAMPING;
+                    p.m_combinedContactStiffness1 = s.stiffness;
+                    p.m_combinedContactDamping1 = s.damping;
+                }
+            }
+        }
+        btDiscreteDynamicsWorld::solveConstraints(info);
+    }
+};
+
+class BulletBackend : public Backend {
+public:
+    std::string name() const override { return "bullet"; }
+    std::string engine_version() const override {
+        return "Bullet " + std::to_string(btGetVersion() / 100) + "." + std::to_string(btGetVersion() % 100) +
+               " (double precision, btDiscreteDynamicsWorld, sequential impulse)";
+    }
+    void build(const Scene& scene, const RunOptions& options) override;
+    double time_step() const override { return dt_; }
+    double critical_step() const override { return 0.0; }
+    StepStatus step() override;
+    Sample sample() const override;
+    std::string failure() const override { return failure_; }
+    std::vector<std::string> notes() const override { return notes_; }
+
+private:
+    void clear();
+    Scene scene_;
+    std::vector<RigidBlock> blocks_;
+    std::unique_ptr<btDefaultCollisionConfiguration> config_;
+    std::unique_ptr<btCollisionDispatcher> dispatcher_;
+    std::unique_ptr<btBroadphaseInterface> broadphase_;
+    std::unique_ptr<btSequentialImpulseConstraintSolver> solver_;
+    std::unique_ptr<CairnWorld> world_;
+    std::vector<std::unique_ptr<btCollisionShape>> shapes_;
+    std::vector<std::unique_ptr<btRigidBody>> bodies_;   // one per scene block
+    bool matched_ = false;
+    double dt_ = 0.0;
+    double t_ = 0.0;
+    double external_work_ = 0.0;
+    std::string failure_;
+    std::vector<std::string> notes_;
+};
+
+void BulletBackend::clear() {
+    if (world_)
+        for (auto& b : bodies_) world_->removeRigidBody(b.get());
+    bodies_.clear();
+    world_.reset();
+    solver_.reset();
+    broadphase_.reset();
+    dispatcher_.reset();
+    config_.reset();
+    shapes_.clear();
+}
+
+void BulletBackend::build(const Scene& scene, const RunOptions& options) {
+    clear();
+    scene_ = scene;
+    notes_.clear();
+    failure_.clear();
+    t_ = 0.0;
+    external_work_ = 0.0;
+    EngineSettings settings(scene_, "bullet");
+    matched_ = contact_mode(settings, options) == "matched";
+    const long long iterations = settings.integer("iterations", 50, 1);
+    const double margin = settings.number("margin", 1e-3, 0.0);
+    const long long directions = settings.integer("friction_directions", 2, 1);
+    const double restitution_threshold = settings.number("restitution_threshold", 0.2, 0.0);
+    settings.finish();
+    if (directions > 2) throw Error("bullet setting 'friction_directions' must be 1 or 2");
+    dt_ = engine_time_step(scene_);
+    blocks_ = rigid_blocks(scene_, "bullet");
+
+    // a fresh world per build: no state survives from an earlier run
+    config_ = std::make_unique<btDefaultCollisionConfiguration>();
+    dispatcher_ = std::make_unique<btCollisionDispatcher>(config_.get());
+    broadphase_ = std::make_unique<btDbvtBroadphase>();
+    solver_ = std::make_unique<btSequentialImpulseConstraintSolver>();
+    world_ = std::make_unique<CairnWorld>(dispatcher_.get(), broadphase_.get(), solver_.get(), config_.get());
+    world_->scene = &scene_;
+    world_->blocks = &blocks_;
+    world_->law = {scene_.contact.friction, scene_.contact.restitution, matched_};
+    world_->setGravity(bt(scene_.gravity));
+    world_->getDispatchInfo().m_enableSatConvex = true;
+    btContactSolverInfo& info = world_->getSolverInfo();
+    info.m_numIterations = static_cast<int>(iterations);
+    info.m_restitutionVelocityThreshold = restitution_threshold;
+    if (directions == 2) info.m_solverMode |= SOLVER_USE_2_FRICTION_DIRECTIONS;
+    if (matched_) {
+        // the spring must carry the momentum: no split impulse
+        info.m_splitImpulse = 0;
+    } else {
+        // every penetration is corrected by split impulse (positions only): no Baumgarte rebound
+        info.m_splitImpulse = 1;
+        info.m_splitImpulsePenetrationThreshold = 0.0;
+    }
+
+    const double linear_damping = 1.0 - std::exp(-scene_.damping.alpha);
+    for (const RigidBlock& b : blocks_) {
+        std::unique_ptr<btCollisionShape> shape;
+        if (b.is_box) {
+            shape = std::make_unique<btBoxShape>(bt(b.half_extents));
+        } else {
+            auto hull = std::make_unique<btConvexHullShape>();
+            for (const Vec3& c : b.corners) hull->addPoint(bt(b.principal.transpose() * (c - b.com)), false);
+            hull->recalcLocalAabb();
+            hull->initializePolyhedralFeatures();
+            shape = std::move(hull);
+        }
+        shape->setMargin(margin);
+        // body frame: centre of mass, principal axes
+        btTransform start;
+        start.setOrigin(bt(b.com_world));
+        start.setRotation(bt(Quat(b.orientation.toRotationMatrix() * b.principal)));
+        double mass = b.fixed ? 0.0 : b.mass;
+        btRigidBody::btRigidBodyConstructionInfo ci(mass, nullptr, shape.get(),
+                                                    b.fixed ? btVector3(0, 0, 0) : bt(b.moments));
+        ci.m_startWorldTransform = start;
+        ci.m_friction = scene_.contact.friction;
+        ci.m_restitution = scene_.contact.restitution;
+        ci.m_linearDamping = b.fixed ? 0.0 : linear_damping;
+        ci.m_angularDamping = b.fixed ? 0.0 : linear_damping;
+        auto body = std::make_unique<btRigidBody>(ci);
+        body->setUserIndex(b.index);
+        body->setActivationState(DISABLE_DEACTIVATION);
+        if (!b.fixed) {
+            const BlockDef& d = scene_.blocks[b.index];
+            body->setLinearVelocity(bt(d.velocity));
+            body->setAngularVelocity(bt(d.angular_velocity));
+        }
+        world_->addRigidBody(body.get());
+        shapes_.push_back(std::move(shape));
+        bodies_.push_back(std::move(body));
+    }
+
+    std::ostringstream n;
+    auto note = [&](const std::string& line) { notes_.push_back(line); };
+    n << "contact_mode: " << (matched_ ? "matched" : "rigid");
+    note(n.str());
+    n.str("");
+    n << "time_step: " << dt_ << " s" << (scene_.run.dt ? "" : " (dt = auto: engine default 1e-4 s)");
+    note(n.str());
+    note("solver: sequential impulse, " + std::to_string(iterations) + " iterations, stepSimulation(dt, 1, dt)");
+    n.str("");
+    n << "margin: " << margin << " m (inside box half extents; hulls use their corners)";
+    note(n.str());
+    if (matched_)
+        note("matched contact: kn*A/4 per manifold point (A = smaller bottom-face area of the pair), "
+             "erp = h*k/(h*k+c), cfm = 1/(h*k+c), split impulse off");
+    else
+        note("rigid contact: split impulse on with threshold 0 (no Baumgarte rebound), restitution " +
+             std::to_string(scene_.contact.restitution));
+    n.str("");
+    n << "restitution_threshold: " << restitution_threshold << " m/s (restitution is zero below it)";
+    note(n.str());
+    note("friction: mu per contact point along " + std::to_string(directions) +
+         " direction(s), each clamped separately (a box, not a cone); no elastic stick before slip");
+    if (scene_.contact.ks > 0) note("shear stiffness ks: ignored (velocity-level friction)");
+    if (scene_.damping.alpha > 0) {
+        n.str("");
+        n << "mass-proportional damping: body damping 1-exp(-alpha) = " << linear_damping
+          << " (v *= exp(-alpha*dt) each step, linear and angular)";
+        note(n.str());
+    }
+    if (scene_.damping.beta > 0) note("stiffness-proportional damping: beta ignored (rigid bodies)");
+    note("deactivation: disabled on every body");
+    note("energy: contact energy 1/2 k d^2 per point in matched mode, 0 in rigid mode; dissipated energy "
+         "not computed (reported 0)");
+}
+
+StepStatus BulletBackend::step() {
+    // loads at their material points; Bullet clears applied forces after every step
+    std::vector<std::pair<int, Vec3>> applied;
+    for (const LoadDef& l : scene_.loads) {
+        double f = l.factor(t_);
+        if (f == 0.0) continue;
+        btRigidBody* body = bodies_[l.block].get();
+        const RigidBlock& b = blocks_[l.block];
+        Quat q = eig(body->getOrientation()) * Quat(b.principal.transpose());
+        Vec3 com = eig(body->getCenterOfMassPosition());
+        Vec3 p = block_point_world(b, com, q, l.point);
+        body->applyForce(bt(f * l.force), bt(p - com));
+    }
+    // work of the loads: force at the start of the step times the point's mean velocity
+    auto load_power = [&]() {
+        double power = 0.0;
+        for (const LoadDef& l : scene_.loads) {
+            double f = l.factor(t_);
+            if (f == 0.0) continue;
+            btRigidBody* body = bodies_[l.block].get();
+            const RigidBlock& b = blocks_[l.block];
+            Quat q = eig(body->getOrientation()) * Quat(b.principal.transpose());
+            Vec3 com = eig(body->getCenterOfMassPosition());
+            Vec3 r = block_point_world(b, com, q, l.point) - com;
+            Vec3 v = eig(body->getLinearVelocity()) + eig(body->getAngularVelocity()).cross(r);
+            power += f * l.force.dot(v);
+        }
+        return power;
+    };
+    double p0 = load_power();
+    world_->stepSimulation(dt_, 1, dt_);
+    double p1 = load_power();
+    t_ += dt_;
+    external_work_ += 0.5 * (p0 + p1) * dt_;
+    for (const auto& body : bodies_) {
+        Vec3 x = eig(body->getCenterOfMassPosition());
+        if (!x.allFinite()) {
+            failure_ = "block '" + scene_.blocks[body->getUserIndex()].name + "' position is not finite at t = " +
+                       std::to_string(t_) + " s";
+            return StepStatus::unstable;
+        }
+    }
+    return StepStatus::ok;
+}
+
+Sample BulletBackend::sample() const {
+    Sample s;
+    s.t = t_;
+    for (const RigidBlock& b : blocks_) {
+        if (b.fixed) continue;
+        const btRigidBody* body = bodies_[b.index].get();
+        BlockState st;
+        st.position = eig(body->getCenterOfMassPosition());
+        st.orientation = (eig(body->getOrientation()) * Quat(b.principal.transpose())).normalized();
+        st.velocity = eig(body->getLinearVelocity());
+        st.angular_velocity = eig(body->getAngularVelocity());
+        s.energy.kinetic += kinetic_energy(b, st.orientation, st.velocity, st.angular_velocity);
+        s.energy.potential += potential_energy(b, scene_.gravity, st.position);
+        s.blocks.push_back(st);
+    }
+    for (const ProbeDef& p : scene_.probes) {
+        const RigidBlock& b = blocks_[p.block];
+        const btRigidBody* body = bodies_[p.block].get();
+        Quat q = eig(body->getOrientation()) * Quat(b.principal.transpose());
+        s.probes.push_back(block_point_world(b, eig(body->getCenterOfMassPosition()), q, p.point));
+    }
+    s.energy.external = external_work_;
+    const btDispatcher* d = world_->getDispatcher();
+    for (int m = 0; m < d->getNumManifolds(); ++m) {
+        const btPersistentManifold* pm = const_cast<btDispatcher*>(d)->getManifoldByIndexInternal(m);
+        for (int i = 0; i < pm->getNumContacts(); ++i) {
+            const btManifoldPoint& p = pm->getContactPoint(i);
+            if (p.getDistance() > 0.0) continue;
+            ++s.contacts;
+            if (matched_) {
+                double k = p.m_combinedContactStiffness1;
+                s.energy.contact += 0.5 * k * p.getDistance() * p.getDistance();
+            }
+        }
+    }
+    return s;
+}
+
+}  // namespace
+
+BackendInfo bullet_backend_info() {
+    BackendInfo info;
+    info.name = "bullet";
+    info.description = "Bullet 3 rigid bodies (double precision); contact rigid or matched (kn*A per manifold)";
+    info.capabilities = bullet_capabilities();
+    info.make = [] { return std::make_unique<BulletBackend>(); };
+    return info;
+}
+
+}  // namespace cairn

@@ -1,0 +1,104 @@
+#include "rigid_blocks.hpp"
+
+#include <Eigen/Eigenvalues>
+#include <cmath>
+
+#include "error.hpp"
+
+namespace cairn {
+
+namespace {
+
+// area of a planar quadrilateral face
+double face_area(const Corners& c, int face) {
+    const auto& f = kFaceCorners[face];
+    return 0.5 * (c[f[2]] - c[f[0]]).cross(c[f[3]] - c[f[1]]).norm();
+}
+
+// true when the corners are an axis-aligned box centred on `centre`
+bool axis_aligned_box(const Corners& c, Vec3& centre, Vec3& half) {
+    centre = Vec3::Zero();
+    for (const auto& p : c) centre += p / 8.0;
+    half = (c[6] - c[0]).cwiseAbs() / 2.0;
+    double scale = half.norm();
+    for (int i = 0; i < 8; ++i) {
+        Vec3 expect(centre.x() + half.x() * kCornerSigns[i][0], centre.y() + half.y() * kCornerSigns[i][1],
+                    centre.z() + half.z() * kCornerSigns[i][2]);
+        if ((c[i] - expect).norm() > 1e-9 * scale) return false;
+    }
+    return true;
+}
+
+}  // namespace
+
+std::vector<RigidBlock> rigid_blocks(const Scene& scene, const std::string& backend) {
+    std::vector<RigidBlock> out;
+    out.reserve(scene.blocks.size());
+    for (size_t i = 0; i < scene.blocks.size(); ++i) {
+        const BlockDef& d = scene.blocks[i];
+        if (d.model == BlockModel::deformable && !d.fixed)
+            throw Error("backend " + backend + " cannot represent deformable block '" + d.name +
+                        "'; run with --model rigid or use the dem backend");
+        if (d.material < 0 || d.material >= static_cast<int>(scene.materials.size()))
+            throw Error("block '" + d.name + "': material index " + std::to_string(d.material) +
+                        " is out of range");
+        RigidBlock b;
+        b.index = static_cast<int>(i);
+        b.name = d.name;
+        b.fixed = d.fixed;
+        b.corners = d.corners;
+        MassProperties mp = mass_properties(d.corners, scene.materials[d.material].density);
+        b.mass = mp.mass;
+        b.com = mp.centre;
+        b.inertia = mp.inertia;
+        Vec3 centre;
+        b.is_box = axis_aligned_box(d.corners, centre, b.half_extents);
+        if (b.is_box) {
+            // a homogeneous box: principal axes are the block axes
+            b.principal.setIdentity();
+            b.moments = mp.inertia.diagonal();
+        } else {
+            Eigen::SelfAdjointEigenSolver<Mat3> eig(mp.inertia);
+            b.principal = eig.eigenvectors();
+            if (b.principal.determinant() < 0) b.principal.col(2) *= -1.0;
+            b.moments = eig.eigenvalues();
+        }
+        b.bearing_area = face_area(d.corners, 0);
+        b.orientation = d.orientation.normalized();
+        b.com_world = d.position + b.orientation * b.com;
+        out.push_back(b);
+    }
+    return out;
+}
+
+Vec3 block_point_world(const RigidBlock& b, const Vec3& com_world, const Quat& q, const Vec3& point) {
+    return com_world + q * (point - b.com);
+}
+
+double kinetic_energy(const RigidBlock& b, const Quat& q, const Vec3& v, const Vec3& w) {
+    Mat3 r = q.toRotationMatrix();
+    Vec3 wb = r.transpose() * w;
+    return 0.5 * b.mass * v.squaredNorm() + 0.5 * wb.dot(b.inertia * wb);
+}
+
+double potential_energy(const RigidBlock& b, const Vec3& gravity, const Vec3& com_world) {
+    return -b.mass * gravity.dot(com_world);
+}
+
+PointSpring matched_point_spring(const Scene& scene, const RigidBlock& a, const RigidBlock* b,
+                                 int points) {
+    const bool b_moves = b && !b->fixed;
+    double area = b ? std::min(a.bearing_area, b->bearing_area) : a.bearing_area;
+    double k = scene.contact.kn * area;
+    double m = b_moves ? a.mass * b->mass / (a.mass + b->mass) : a.mass;
+    if (a.fixed && b_moves) m = b->mass;
+    double c = 0.0;
+    switch (scene.contact.damping_rule) {
+        case ContactDampingRule::none: break;
+        case ContactDampingRule::ratio: c = 2.0 * scene.contact.damping * std::sqrt(k * m); break;
+        case ContactDampingRule::time: c = scene.contact.damping * k; break;
+    }
+    return {k / points, c / points};
+}
+
+}  // namespace cairn

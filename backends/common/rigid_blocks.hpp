@@ -1,0 +1,55 @@
+#pragma once
+/// Scene blocks as rigid bodies for the reference engines: mass properties, the centre-of-mass
+/// frame an engine simulates, and conversions back to cairn's block frame.
+
+#include <string>
+#include <vector>
+
+#include "geometry/hexahedron.hpp"
+#include "scene/scene.hpp"
+
+namespace cairn {
+
+/// One scene block seen as a rigid body.
+struct RigidBlock {
+    int index = 0;                        ///< index into Scene::blocks
+    std::string name;                     ///< block name
+    bool fixed = false;                   ///< no degrees of freedom
+    bool is_box = false;                  ///< true: an axis-aligned box in its block frame
+    Corners corners;                      ///< corners in the block frame, m
+    double mass = 0.0;                    ///< kg
+    Vec3 com = Vec3::Zero();              ///< centre of mass in the block frame, m
+    Mat3 inertia = Mat3::Zero();          ///< inertia about the centre of mass, block axes, kg·m²
+    Mat3 principal = Mat3::Identity();    ///< columns: principal axes in block axes (rotation)
+    Vec3 moments = Vec3::Zero();          ///< principal moments of inertia, kg·m²
+    Vec3 half_extents = Vec3::Zero();     ///< box half extents along the block axes, m (boxes only)
+    double bearing_area = 0.0;            ///< area of the bottom face (face 0), m²
+    Vec3 com_world = Vec3::Zero();        ///< centre of mass at t = 0, world, m
+    Quat orientation = Quat::Identity();  ///< rotation block frame → world at t = 0
+};
+
+/// every scene block as a rigid body, in scene order; throws cairn::Error for a deformable block
+/// ("backend <backend> cannot represent deformable block ...") or a bad material index
+std::vector<RigidBlock> rigid_blocks(const Scene& scene, const std::string& backend);
+
+/// world position of a block-frame point given the block's centre of mass (world) and orientation
+Vec3 block_point_world(const RigidBlock& b, const Vec3& com_world, const Quat& q, const Vec3& point);
+
+/// kinetic energy ½ m v² + ½ ωᵀ I_world ω of a block, J
+double kinetic_energy(const RigidBlock& b, const Quat& q, const Vec3& v, const Vec3& w);
+
+/// gravity potential −m g·x of a block whose centre of mass is at `com_world`, J
+double potential_energy(const RigidBlock& b, const Vec3& gravity, const Vec3& com_world);
+
+/// per-point penalty spring of the matched contact mode
+struct PointSpring {
+    double stiffness = 0.0;   ///< N/m per contact point
+    double damping = 0.0;     ///< N·s/m per contact point
+};
+
+/// the scene's face spring kn·A (A = the smaller bearing area of the pair) and its contact damping,
+/// split over `points` contact points; `b` may be null for a pair with a fixed block
+PointSpring matched_point_spring(const Scene& scene, const RigidBlock& a, const RigidBlock* b,
+                                 int points = 4);
+
+}  // namespace cairn

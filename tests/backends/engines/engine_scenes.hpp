@@ -1,0 +1,31 @@
+#pragma once
+// scenes built in code for the reference-engine tests (no scene file needed)
+
+#include <string>
+#include <vector>
+
+#include "scene/scene.hpp"
+
+namespace cairn::test {
+
+/// an empty scene: stone (2600 kg/m³, E = 30 GPa, ν = 0.2), kn = ks = 3e7 N/m³, μ = 0.6, dt = 1e-4 s
+Scene base_scene(const std::string& name);
+
+/// add an axis-aligned box with its centre at `centre` (m); returns its index
+int add_box(Scene& scene, const std::string& name, const Vec3& size, const Vec3& centre, bool fixed);
+
+/// add a box-shaped block given as a general hexahedron (Shape::hexahedron); returns its index
+int add_hexahedron_box(Scene& scene, const std::string& name, const Vec3& size, const Vec3& centre,
+                       bool fixed);
+
+/// a 0.2 x 0.7 x 1.0 m block resting on its x = +0.1 m bottom edge on a fixed base, tilted by
+/// theta0 (rad) about y; top of the base at z = 0
+Scene rocking_scene(double theta0);
+
+/// the reference-engine backends built into this binary (every registered name except "dem")
+std::vector<std::string> engine_names();
+
+/// rotation angle about y of a rotation that is a pure y rotation, rad
+double angle_about_y(const Quat& q);
+
+}  // namespace cairn::test
