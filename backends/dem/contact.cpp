@@ -1,0 +1,213 @@
+#include "contact.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <tuple>
+
+#include "broad_phase.hpp"
+
+namespace cairn::dem {
+
+void ContactSet::configure(const ContactLaw& law, double margin) {
+    law_ = law;
+    margin_ = margin;
+}
+
+bool is_target(const std::vector<Block>& blocks, int h, int face, int t, int side) {
+    double ah = blocks[h].face_area[face], at = blocks[t].face_area[side];
+    double tol = 1e-9 * std::max(ah, at);
+    if (at > ah + tol) return true;
+    if (ah > at + tol) return false;
+    if (blocks[t].fixed != blocks[h].fixed) return blocks[t].fixed;
+    double vt = blocks[t].volume, vh = blocks[h].volume;
+    if (std::abs(vt - vh) > 1e-9 * std::max(vt, vh)) return vt > vh;
+    return t < h;
+}
+
+void ContactSet::refresh(std::vector<Block>& blocks) {
+    std::map<std::tuple<int, int, int>, std::vector<Anchor>> old;
+    for (auto& c : candidates_) old[{c.hit_block, c.hit_face, c.target_block}] = std::move(c.anchors);
+    candidates_.clear();
+
+    std::vector<Aabb> boxes(blocks.size());
+    for (size_t i = 0; i < blocks.size(); ++i) {
+        boxes[i] = blocks[i].bounds();
+        boxes[i].inflate(0.5 * margin_);
+        blocks[i].x_at_refresh = blocks[i].body.x;
+        blocks[i].q_at_refresh = blocks[i].body.q;
+    }
+    for (auto [i, j] : overlapping_pairs(boxes)) {
+        if (blocks[i].fixed && blocks[j].fixed) continue;
+        for (auto [h, t] : {std::pair<int, int>{i, j}, std::pair<int, int>{j, i}}) {
+            for (int f = 0; f < int(blocks[h].faces.size()); ++f) {
+                Aabb fb;
+                for (int n : blocks[h].faces[f]) fb.add(blocks[h].x[n]);
+                fb.inflate(0.5 * margin_);
+                if (!fb.overlaps(boxes[t])) continue;
+                Candidate c{h, f, t, {}};
+                auto it = old.find({h, f, t});
+                if (it != old.end()) c.anchors = std::move(it->second);
+                c.anchors.resize(blocks[h].hits[f].size());
+                candidates_.push_back(std::move(c));
+            }
+        }
+    }
+}
+
+namespace {
+
+// geometry of a target block's sides for one step
+struct TargetSides {
+    std::vector<Vec3> normal;   // outward unit normals
+    std::vector<Vec3> centre;   // face centres
+};
+
+TargetSides sides_of(const Block& b) {
+    TargetSides s;
+    for (size_t k = 0; k < b.faces.size(); ++k) {
+        Quad q = b.face_quad(int(k));
+        s.normal.push_back(quad_normal(q, Vec2::Zero()));
+        s.centre.push_back(0.25 * (q[0] + q[1] + q[2] + q[3]));
+    }
+    return s;
+}
+
+// spread a force at natural coordinates xi of face k of block b to its nodes
+void spread(Block& b, int k, const Vec2& xi, const Vec3& force) {
+    auto w = quad_weights(xi);
+    for (int i = 0; i < 4; ++i) b.f[b.faces[k][i]] += w[i] * force;
+}
+
+double reduced_mass(const Block& a, const Block& b) {
+    if (a.fixed) return b.body.mass;
+    if (b.fixed) return a.body.mass;
+    return a.body.mass * b.body.mass / (a.body.mass + b.body.mass);
+}
+
+}  // namespace
+
+ContactTotals ContactSet::apply(std::vector<Block>& blocks, double dt) {
+    ContactTotals tot;
+    int cached_h = -1, cached_t = -1;
+    TargetSides sides;
+    std::vector<int> best_face;  // per target side: the hitting block's face most opposed to it
+    std::vector<char> target_ok; // per target side: it is the target for its best face
+    double flush_tol = 0.0, closer_tol = 0.0;
+    for (auto& c : candidates_) {
+        Block& hb = blocks[c.hit_block];
+        Block& tb = blocks[c.target_block];
+        if (c.hit_block != cached_h || c.target_block != cached_t) {
+            cached_h = c.hit_block;
+            cached_t = c.target_block;
+            sides = sides_of(tb);
+            std::vector<Vec3> hn(hb.faces.size());
+            for (size_t f = 0; f < hb.faces.size(); ++f) hn[f] = quad_normal(hb.face_quad(int(f)), Vec2::Zero());
+            best_face.assign(tb.faces.size(), -1);
+            for (size_t s = 0; s < tb.faces.size(); ++s) {
+                double best = 0.0;
+                for (size_t f = 0; f < hb.faces.size(); ++f) {
+                    double d = hn[f].dot(sides.normal[s]);
+                    if (d < best) best = d, best_face[s] = int(f);
+                }
+            }
+            target_ok.assign(tb.faces.size(), 0);
+            for (size_t s = 0; s < tb.faces.size(); ++s)
+                target_ok[s] = best_face[s] >= 0 && is_target(blocks, c.hit_block, best_face[s], c.target_block, int(s));
+            flush_tol = 1e-9 * tb.r_max;
+            closer_tol = 0.25 * tb.min_edge;
+        }
+        const Quad hq = hb.face_quad(c.hit_face);
+        const auto& pts = hb.hits[c.hit_face];
+        // damping coefficients per unit tributary area, N·s/m³
+        double cn_area = 0.0, ct_area = 0.0;
+        if (law_.damping_rule == ContactDampingRule::time) {
+            cn_area = law_.damping * law_.kn;
+            ct_area = law_.damping * law_.ks;
+        } else if (law_.damping_rule == ContactDampingRule::ratio) {
+            double m = reduced_mass(hb, tb), area = hb.face_area[c.hit_face];
+            cn_area = 2.0 * law_.damping * std::sqrt(law_.kn * m / area);
+            ct_area = 2.0 * law_.damping * std::sqrt(law_.ks * m / area);
+        }
+        for (size_t k = 0; k < pts.size(); ++k) {
+            Anchor& anchor = c.anchors[k];
+            const Vec3 xp = quad_point(hq, pts[k].xi);
+            // the point acts on the allowed target side it lies deepest behind, if it is inside
+            // the target block (behind every side plane, flush within rounding) and no other
+            // side is clearly closer (it would be entering through that side instead)
+            int side = -1;
+            double d_side = 0.0;
+            for (size_t s = 0; s < sides.normal.size(); ++s) {
+                if (best_face[s] != c.hit_face || !target_ok[s]) continue;
+                double d = sides.normal[s].dot(xp - sides.centre[s]);
+                if (side < 0 || d > d_side) side = int(s), d_side = d;
+            }
+            bool inside = side >= 0 && d_side < 0.0;
+            for (size_t s = 0; inside && s < sides.normal.size(); ++s) {
+                if (int(s) == side) continue;
+                double d = sides.normal[s].dot(xp - sides.centre[s]);
+                if (d > flush_tol || d > d_side + closer_tol) inside = false;
+            }
+            if (!inside) {
+                anchor.side = -1;
+                continue;
+            }
+            const Quad tq = tb.face_quad(side);
+            Projection pr = project(tq, xp);
+            const Vec3& n = pr.normal;
+            const double depth = n.dot(pr.point - xp);
+            if (!(depth > 0.0)) {
+                anchor.side = -1;
+                continue;
+            }
+            const double a = pts[k].area;
+            // relative velocity of the hitting point against the target material point
+            Vec3 vh = Vec3::Zero(), vt = Vec3::Zero();
+            auto wh = quad_weights(pts[k].xi), wt = quad_weights(pr.xi);
+            for (int i = 0; i < 4; ++i) {
+                vh += wh[i] * hb.v[hb.faces[c.hit_face][i]];
+                vt += wt[i] * tb.v[tb.faces[side][i]];
+            }
+            const Vec3 vrel = vh - vt;
+            const double closing = -vrel.dot(n);
+            // normal: penalty spring plus dashpot, never pulling
+            const double fn_el = law_.kn * a * depth;
+            double fn = std::max(0.0, fn_el + cn_area * a * closing);
+            tot.dissipated += (fn - fn_el) * closing * dt;
+            tot.stored += 0.5 * fn_el * depth;
+            // shear: elastic from the stick anchor, capped at μ·Fn
+            Vec3 fs = Vec3::Zero();
+            if (law_.ks > 0.0 && fn > 0.0) {
+                if (anchor.side != side) anchor = Anchor{side, pr.xi};
+                Vec3 u = pr.point - quad_point(tq, anchor.xi0);
+                u -= u.dot(n) * n;
+                Vec3 vt_rel = vrel - vrel.dot(n) * n;
+                const double ks_a = law_.ks * a;
+                Vec3 f_el = -ks_a * u;
+                Vec3 trial = f_el - ct_area * a * vt_rel;
+                const double cap = law_.friction * fn;
+                if (trial.norm() <= cap) {
+                    fs = trial;
+                    tot.stored += 0.5 * u.squaredNorm() * ks_a;
+                    tot.dissipated += ct_area * a * vt_rel.squaredNorm() * dt;
+                } else {
+                    // slip: the anchor follows so that the spring carries exactly μ·Fn
+                    fs = cap * trial / trial.norm();
+                    Vec3 x0 = pr.point + fs / ks_a;
+                    anchor.xi0 = project(tq, x0, pr.xi).xi;
+                    tot.dissipated += 0.5 * ks_a * u.squaredNorm() - 0.5 * fs.squaredNorm() / ks_a;
+                    tot.stored += 0.5 * fs.squaredNorm() / ks_a;
+                }
+            } else {
+                anchor.side = -1;
+            }
+            const Vec3 force = fn * n + fs;
+            spread(hb, c.hit_face, pts[k].xi, force);
+            spread(tb, side, pr.xi, -force);
+            ++tot.active;
+        }
+    }
+    return tot;
+}
+
+}  // namespace cairn::dem

@@ -1,0 +1,60 @@
+#include "time_step.hpp"
+
+#include <Eigen/Eigenvalues>
+#include <algorithm>
+#include <cmath>
+
+namespace cairn::dem {
+
+double face_contact_omega2(const Block& b, int face, const ContactLaw& law) {
+    using Mat6 = Eigen::Matrix<double, 6, 6>;
+    using Vec6 = Eigen::Matrix<double, 6, 1>;
+    const Quad q = b.face_quad(face);
+    const Vec3 n = quad_normal(q, Vec2::Zero());
+    const Vec3 t1 = n.unitOrthogonal(), t2 = n.cross(t1);
+    Mat6 k = Mat6::Zero();
+    for (const auto& p : b.hits[face]) {
+        Vec3 r = quad_point(q, p.xi) - b.body.x;
+        auto add = [&](const Vec3& d, double stiff) {
+            Vec6 g;
+            g << d, r.cross(d);
+            k += stiff * p.area * g * g.transpose();
+        };
+        add(n, law.kn);
+        add(t1, law.ks);
+        add(t2, law.ks);
+    }
+    // M^{-1/2} K M^{-1/2} with M = diag(m, I_world)
+    Mat3 rot = b.body.q.toRotationMatrix();
+    Mat3 iw = rot * b.body.inertia_body * rot.transpose();
+    Eigen::SelfAdjointEigenSolver<Mat3> ei(iw);
+    Mat3 iw_inv_sqrt = ei.eigenvectors() * ei.eigenvalues().cwiseSqrt().cwiseInverse().asDiagonal() *
+                       ei.eigenvectors().transpose();
+    Mat6 s = Mat6::Zero();
+    s.topLeftCorner<3, 3>() = Mat3::Identity() / std::sqrt(b.body.mass);
+    s.bottomRightCorner<3, 3>() = iw_inv_sqrt;
+    Mat6 a = s * k * s;
+    Eigen::SelfAdjointEigenSolver<Mat6> es(a, Eigen::EigenvaluesOnly);
+    return es.eigenvalues().maxCoeff();
+}
+
+double critical_step(const std::vector<Block>& blocks, const ContactLaw& law) {
+    std::vector<double> per_block;
+    for (const auto& b : blocks) {
+        if (b.fixed) continue;
+        double w2 = 0.0;
+        for (int f = 0; f < int(b.faces.size()); ++f) w2 = std::max(w2, face_contact_omega2(b, f, law));
+        per_block.push_back(w2);
+    }
+    if (per_block.empty()) return 0.0;
+    std::sort(per_block.rbegin(), per_block.rend());
+    double w2 = per_block[0] + (per_block.size() > 1 ? per_block[1] : 0.0);
+    if (!(w2 > 0.0)) return 0.0;
+    double w = std::sqrt(w2);
+    double zeta = 0.0;
+    if (law.damping_rule == ContactDampingRule::ratio) zeta = law.damping;
+    if (law.damping_rule == ContactDampingRule::time) zeta = 0.5 * law.damping * w;
+    return 2.0 / w * (std::sqrt(1.0 + zeta * zeta) - zeta);
+}
+
+}  // namespace cairn::dem

@@ -1,0 +1,59 @@
+#pragma once
+/// Analytic references of the validation cases (../shared/reference/physics.md), SI units.
+
+namespace cairn::oracle {
+
+/// a block of mass m (kg) resting on a penalty spring K = kn·A (N/m) under gravity g (m/s²)
+struct RestingBlock {
+    double mass, stiffness, g;
+    /// equilibrium penetration mg/K, m
+    double penetration() const { return mass * g / stiffness; }
+    /// angular frequency √(K/m), rad/s
+    double omega() const;
+    /// period 2π/ω, s
+    double period() const;
+};
+
+/// the same block dropped from a gap h (m) onto the spring, no damping
+struct DroppedBlock {
+    double mass, stiffness, g, gap;
+    /// speed at first contact √(2gh), m/s
+    double impact_speed() const;
+    /// time of first contact √(2h/g), s
+    double first_contact() const;
+    /// contact duration [π + 2 atan(g/(ω v0))]/ω, s
+    double contact_time() const;
+    /// largest penetration [mg + √((mg)² + 2Kmgh)]/K, m
+    double max_penetration() const;
+    /// bounce period 2 v0/g + contact time, s
+    double bounce_period() const;
+};
+
+/// acceleration of a block pulled by H (N) on a flat base with friction μ; 0 if it holds, m/s²
+double pulled_block_acceleration(double mass, double g, double pull, double mu);
+
+/// acceleration down a plane inclined θ (rad) with friction μ; 0 if it holds, m/s²
+double incline_acceleration(double g, double theta, double mu);
+
+/// Housner's rigid rectangular block of half-width b and half-height h (m) rocking on a rigid base
+struct HousnerBlock {
+    double b, h, g;
+    /// slenderness α = atan(b/h), rad
+    double alpha() const;
+    /// R = √(b²+h²), m
+    double radius() const;
+    /// frequency parameter p = √(3g/(4R)), 1/s
+    double p() const;
+    /// exact time from release at rest at θ0 (rad, 0 < θ0 < α) to the first impact, s
+    double first_impact(double theta0) const;
+    /// linearised time to the first impact, s
+    double first_impact_linear(double theta0) const;
+    /// angular velocity at the first impact, rad/s
+    double impact_omega(double theta0) const;
+    /// angular-velocity ratio of an impact, 1 − (3/2) sin²α
+    double velocity_ratio() const;
+    /// amplitude after n impacts (rad) from release at θ0
+    double amplitude_after(double theta0, int n) const;
+};
+
+}  // namespace cairn::oracle
