@@ -1,0 +1,57 @@
+// the cairn executable: run scenes on backends, list what is available
+#include <exception>
+#include <iostream>
+
+#include <CLI/CLI.hpp>
+
+#include "commands.hpp"
+
+int main(int argc, char** argv) {
+    using namespace cairn;
+    CLI::App app{"cairn: a testbed for masonry block dynamics (scenes on several engines)"};
+    app.set_version_flag("--version", std::string("cairn ") + CAIRN_VERSION);
+    app.require_subcommand(1);
+
+    RunJob job;
+    bool quiet = false;
+    auto* run = app.add_subcommand("run", "run one scene on one backend");
+    run->add_option("scene", job.scene, "scene file, or a shipped scene name (paper/stability)")
+        ->required();
+    run->add_option("--backend,-b", job.backend, "backend name (cairn list)")->required();
+    run->add_option("--out,-o", job.out_dir, "output directory")->required();
+    run->add_flag("--force", job.force, "write into a non-empty directory, replacing old outputs");
+    run->add_option("--set", job.overrides, "override a scene key: --set key=value (repeatable)")
+        ->take_all()
+        ->allow_extra_args(false);
+    run->add_option("--model", job.model, "model of every free block")
+        ->check(CLI::IsMember({"rigid", "deformable"}));
+    run->add_option("--contact", job.contact, "contact mode of the reference engines")
+        ->check(CLI::IsMember({"rigid", "matched"}));
+    run->add_flag("--quiet,-q", quiet, "no progress line and no summary");
+
+    app.add_subcommand("list", "list the shipped scenes and the backends with their capabilities");
+
+    RunAllOptions all;
+    auto* run_all = app.add_subcommand("run-all", "run every shipped scene on every backend");
+    run_all->add_option("--out,-o", all.out_dir, "output directory (default out)");
+    run_all->add_option("--backends", all.backends, "comma-separated backend names")
+        ->delimiter(',');
+    run_all->add_flag("--quiet,-q", all.quiet, "no progress lines");
+
+    try {
+        app.parse(argc, argv);
+    } catch (const CLI::ParseError& e) {
+        const int code = app.exit(e);
+        return code == 0 ? kExitOk : kExitBadInput;
+    }
+
+    try {
+        if (app.got_subcommand(run)) return run_command(job, quiet);
+        if (app.got_subcommand("list")) return list_command();
+        if (app.got_subcommand(run_all)) return run_all_command(all);
+    } catch (const std::exception& e) {
+        std::cerr << "error: " << e.what() << "\n";
+        return kExitFailure;
+    }
+    return kExitFailure;
+}

@@ -1,0 +1,32 @@
+#include <unistd.h>
+
+#include <iostream>
+
+#include "commands.hpp"
+
+namespace cairn {
+
+bool stderr_is_terminal() { return isatty(STDERR_FILENO) != 0; }
+
+int run_command(RunJob job, bool quiet) {
+    job.progress = !quiet && stderr_is_terminal();
+    job.label = job.scene + " on " + job.backend;
+    const JobOutcome o = execute_run(job);
+    switch (o.status) {
+        case JobStatus::input_error:
+        case JobStatus::refused:
+            std::cerr << "error: " << o.message << "\n";
+            return kExitBadInput;
+        case JobStatus::unstable:
+            std::cerr << "error: " << o.message << "\n"
+                      << "partial trajectory kept in " << job.out_dir << "/trajectory.partial.csv\n";
+            if (!quiet) std::cout << summary_line(o) << "\n";
+            return kExitUnstable;
+        case JobStatus::completed:
+            if (!quiet) std::cout << summary_line(o) << " -> " << job.out_dir << "\n";
+            return kExitOk;
+    }
+    return kExitFailure;
+}
+
+}  // namespace cairn

@@ -1,0 +1,53 @@
+#pragma once
+/// One run of one scene on one backend into an output directory: the work behind `cairn run`,
+/// shared by `cairn run-all`.
+
+#include <string>
+#include <vector>
+
+namespace cairn {
+
+/// What to run and where.
+struct RunJob {
+    std::string scene;                    ///< scene file path or shipped scene name
+    std::string backend;                  ///< registry name
+    std::string out_dir;                  ///< output directory
+    bool force = false;                   ///< write into a non-empty directory, replacing old outputs
+    std::vector<std::string> overrides;   ///< "key=value" scene overrides
+    std::string model;                    ///< "rigid"/"deformable" for every free block; empty = scene's
+    std::string contact = "rigid";        ///< contact mode of the reference engines
+    bool progress = false;                ///< show a progress line on stderr
+    std::string label;                    ///< name shown in the progress line
+};
+
+/// How a run ended.
+enum class JobStatus {
+    completed,     ///< outputs written
+    unstable,      ///< partial outputs written, status "unstable"
+    input_error,   ///< bad scene, override, backend name or output dir: nothing written
+    refused,       ///< the backend cannot build this scene: nothing written
+};
+
+/// What a run produced, for the summary line and the run-all table.
+struct JobOutcome {
+    JobStatus status = JobStatus::input_error;
+    std::string message;              ///< error or instability message
+    long long steps = 0;              ///< steps taken
+    double dt = 0.0;                  ///< s
+    double wall_seconds = 0.0;        ///< s
+    double final_balance_error = 0.0; ///< J, last sample's total energy minus the first's
+    bool energy_drift = false;        ///< the balance error passed the drift bound
+    double max_balance_error = 0.0;   ///< largest balance error relative to the energy scale
+};
+
+/// run `job`; cairn::Error from input or the backend becomes input_error/refused, other exceptions
+/// propagate
+JobOutcome execute_run(const RunJob& job);
+
+/// "completed", "unstable", "error", "refused"
+const char* to_string(JobStatus s);
+
+/// one-line summary of an outcome: steps, dt, wall time, final balance error
+std::string summary_line(const JobOutcome& o);
+
+}  // namespace cairn

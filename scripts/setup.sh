@@ -1,0 +1,45 @@
+#!/usr/bin/env bash
+# Set-up of a Debian 12 machine for cairn, then a Release build in build/.
+# Idempotent: installs only the Debian packages that are missing, and says nothing when all are there.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+
+# what the build, the tests and the report need
+packages=(
+  g++ cmake make pkg-config          # compiler and build
+  libeigen3-dev                      # linear algebra
+  libtomlplusplus-dev                # scene files
+  libcli11-dev                       # command line
+  nlohmann-json3-dev                 # run records
+  libfccp-dev                        # reading CSV
+  catch2                             # tests (v2)
+  libbenchmark-dev                   # benchmarks of kernels
+  gnuplot-nox                        # figures of the report
+  libbullet-dev libode-dev libmujoco-dev   # reference engines
+)
+# OpenMP comes with g++ (libgomp); no other package is needed for it.
+
+missing=()
+for p in "${packages[@]}"; do
+  if [[ "$(dpkg-query -W -f='${db:Status-Abbrev}' "$p" 2>/dev/null)" != ii* ]]; then
+    missing+=("$p")
+  fi
+done
+
+if ((${#missing[@]})); then
+  echo "setup: installing ${missing[*]}" >&2
+  install=(bash -c 'apt-get update -qq && DEBIAN_FRONTEND=noninteractive apt-get install -y -qq "$@"' _ "${missing[@]}")
+  if [[ $(id -u) -eq 0 ]]; then
+    "${install[@]}" >/dev/null
+  elif command -v sudo >/dev/null 2>&1; then
+    sudo "${install[@]}" >/dev/null
+  else
+    echo "setup: these Debian packages are missing and I am neither root nor able to sudo:" >&2
+    echo "  ${missing[*]}" >&2
+    echo "install them with: apt-get install ${missing[*]}" >&2
+    exit 1
+  fi
+fi
+
+cmake -S . -B build -DCMAKE_BUILD_TYPE=Release >/dev/null
+cmake --build build -j"$(nproc)" >/dev/null

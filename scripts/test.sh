@@ -1,0 +1,6 @@
+#!/usr/bin/env bash
+# Build cairn in Release (installing missing Debian packages) and run every test.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+bash scripts/setup.sh
+ctest --test-dir build --output-on-failure -j2
