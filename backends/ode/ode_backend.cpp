@@ -1,0 +1,351 @@
+#include "ode/ode_backend.hpp"
+
+#include <ode/ode.h>
+
+#include <array>
+#include <cmath>
+#include <memory>
+#include <sstream>
+
+#include "engine_settings.hpp"
+#include "error.hpp"
+#include "rigid_blocks.hpp"
+
+namespace cairn {
+
+std::vector<FeatureSupport> ode_capabilities();
+
+namespace {
+
+// collision data of one general hexahedron, kept alive for ODE (it does not copy)
+struct ConvexData {
+    std::array<dReal, 6 * 4> planes;     // n·x = d per face
+    std::array<dReal, 8 * 3> points;     // corners relative to the centre of mass, block axes
+    std::array<unsigned, 6 * 5> polygons;  // 4, i0..i3 per face, counter-clockwise from outside
+};
+
+class OdeBackend : public Backend {
+public:
+    OdeBackend() {
+        static const bool initialised = dInitODE2(0) != 0;
+        (void)initialised;
+    }
+    ~OdeBackend() override { clear(); }
+    std::string name() const override { return "ode"; }
+    std::string engine_version() const override {
+        return std::string("ODE 0.16 (") + dGetConfiguration() + ")";
+    }
+    void build(const Scene& scene, const RunOptions& options) override;
+    double time_step() const override { return dt_; }
+    double critical_step() const override { return 0.0; }
+    StepStatus step() override;
+    Sample sample() const override;
+    std::string failure() const override { return failure_; }
+    std::vector<std::string> notes() const override { return notes_; }
+
+private:
+    static void near_callback(void* self, dGeomID a, dGeomID b);
+    void collide(dGeomID a, dGeomID b);
+    void clear();
+    Vec3 com(int block) const;
+    Quat orientation(int block) const;
+    double load_power() const;
+
+    Scene scene_;
+    std::vector<RigidBlock> blocks_;
+    std::vector<std::unique_ptr<ConvexData>> convex_;
+    std::vector<dBodyID> bodies_;   // per block, null for fixed blocks
+    std::vector<dGeomID> geoms_;    // per block
+    dWorldID world_ = nullptr;
+    dSpaceID space_ = nullptr;
+    dJointGroupID contacts_ = nullptr;
+    bool matched_ = false;
+    bool quickstep_ = false;
+    double dt_ = 0.0;
+    double t_ = 0.0;
+    double external_work_ = 0.0;
+    double contact_energy_ = 0.0;
+    int contact_count_ = 0;
+    std::string failure_;
+    std::vector<std::string> notes_;
+};
+
+void OdeBackend::clear() {
+    if (contacts_) dJointGroupDestroy(contacts_);
+    if (space_) dSpaceDestroy(space_);   // destroys the geoms it holds
+    if (world_) dWorldDestroy(world_);   // destroys the bodies
+    contacts_ = nullptr;
+    space_ = nullptr;
+    world_ = nullptr;
+    bodies_.clear();
+    geoms_.clear();
+    convex_.clear();
+}
+
+Vec3 OdeBackend::com(int block) const {
+    const dBodyID b = bodies_[block];
+    if (!b) return blocks_[block].com_world;
+    const dReal* p = dBodyGetPosition(b);
+    return {p[0], p[1], p[2]};
+}
+
+Quat OdeBackend::orientation(int block) const {
+    const dBodyID b = bodies_[block];
+    if (!b) return blocks_[block].orientation;
+    const dReal* q = dBodyGetQuaternion(b);
+    return Quat(q[0], q[1], q[2], q[3]);
+}
+
+void OdeBackend::build(const Scene& scene, const RunOptions& options) {
+    clear();
+    scene_ = scene;
+    notes_.clear();
+    failure_.clear();
+    t_ = external_work_ = contact_energy_ = 0.0;
+    contact_count_ = 0;
+    EngineSettings settings(scene_, "ode");
+    matched_ = contact_mode(settings, options) == "matched";
+    std::string stepper = settings.word("stepper", "auto", {"auto", "step", "quickstep"});
+    const long long iterations = settings.integer("iterations", 50, 1);
+    const double max_correcting = settings.number("max_correcting_vel", 0.01, 0.0);
+    const double erp = settings.number("erp", 0.2, 0.0);
+    const double cfm = settings.number("cfm", 1e-10, 0.0);
+    settings.finish();
+    dt_ = engine_time_step(scene_);
+    blocks_ = rigid_blocks(scene_, "ode");
+    int free_blocks = 0;
+    for (const auto& b : blocks_) free_blocks += b.fixed ? 0 : 1;
+    quickstep_ = stepper == "quickstep" || (stepper == "auto" && free_blocks > 10);
+
+    // a fresh world per build; QuickStep's constraint shuffling draws from dRand: seed it
+    dRandSetSeed(0);
+    world_ = dWorldCreate();
+    space_ = dHashSpaceCreate(nullptr);
+    contacts_ = dJointGroupCreate(0);
+    dWorldSetGravity(world_, scene_.gravity.x(), scene_.gravity.y(), scene_.gravity.z());
+    dWorldSetAutoDisableFlag(world_, 0);
+    dWorldSetERP(world_, erp);
+    dWorldSetCFM(world_, cfm);
+    dWorldSetQuickStepNumIterations(world_, static_cast<int>(iterations));
+    dWorldSetContactSurfaceLayer(world_, 0.0);
+    // rigid: a small correcting velocity stops ERP from launching the block; matched: the soft
+    // ERP/CFM row is the spring and must not be capped
+    dWorldSetContactMaxCorrectingVel(world_, matched_ ? dInfinity : max_correcting);
+
+    for (const RigidBlock& b : blocks_) {
+        dGeomID g;
+        if (b.is_box) {
+            g = dCreateBox(space_, 2 * b.half_extents.x(), 2 * b.half_extents.y(), 2 * b.half_extents.z());
+        } else {
+            auto c = std::make_unique<ConvexData>();
+            for (int i = 0; i < 8; ++i)
+                for (int k = 0; k < 3; ++k) c->points[3 * i + k] = b.corners[i][k] - b.com[k];
+            for (int f = 0; f < 6; ++f) {
+                const auto& fc = kFaceCorners[f];
+                Vec3 p0 = b.corners[fc[0]] - b.com;
+                Vec3 n = ((b.corners[fc[1]] - b.corners[fc[0]]).cross(b.corners[fc[3]] - b.corners[fc[0]]))
+                             .normalized();
+                for (int k = 0; k < 3; ++k) c->planes[4 * f + k] = n[k];
+                c->planes[4 * f + 3] = n.dot(p0);
+                c->polygons[5 * f] = 4;
+                for (int k = 0; k < 4; ++k) c->polygons[5 * f + 1 + k] = static_cast<unsigned>(fc[k]);
+            }
+            g = dCreateConvex(space_, c->planes.data(), 6, c->points.data(), 8, c->polygons.data());
+            convex_.push_back(std::move(c));
+        }
+        dGeomSetData(g, reinterpret_cast<void*>(static_cast<intptr_t>(b.index)));
+        // geometry frame: block axes at the centre of mass (a box is centred on it)
+        Mat3 r = b.orientation.toRotationMatrix();
+        dMatrix3 rm;
+        for (int i = 0; i < 3; ++i) {
+            for (int j = 0; j < 3; ++j) rm[4 * i + j] = r(i, j);
+            rm[4 * i + 3] = 0.0;
+        }
+        dBodyID body = nullptr;
+        if (b.fixed) {
+            dGeomSetPosition(g, b.com_world.x(), b.com_world.y(), b.com_world.z());
+            dGeomSetRotation(g, rm);
+        } else {
+            body = dBodyCreate(world_);
+            dMass m;
+            const Mat3& I = b.inertia;
+            dMassSetParameters(&m, b.mass, 0, 0, 0, I(0, 0), I(1, 1), I(2, 2), I(0, 1), I(0, 2), I(1, 2));
+            dBodySetMass(body, &m);
+            dBodySetPosition(body, b.com_world.x(), b.com_world.y(), b.com_world.z());
+            dBodySetRotation(body, rm);
+            const BlockDef& d = scene_.blocks[b.index];
+            dBodySetLinearVel(body, d.velocity.x(), d.velocity.y(), d.velocity.z());
+            dBodySetAngularVel(body, d.angular_velocity.x(), d.angular_velocity.y(), d.angular_velocity.z());
+            dBodySetAutoDisableFlag(body, 0);
+            dGeomSetBody(g, body);
+        }
+        bodies_.push_back(body);
+        geoms_.push_back(g);
+    }
+
+    std::ostringstream n;
+    auto note = [&](std::ostringstream& s) { notes_.push_back(s.str()); s.str(""); };
+    n << "contact_mode: " << (matched_ ? "matched" : "rigid");
+    note(n);
+    n << "time_step: " << dt_ << " s" << (scene_.run.dt ? "" : " (dt = auto: engine default 1e-4 s)");
+    note(n);
+    n << "stepper: " << (quickstep_ ? "dWorldQuickStep, " + std::to_string(iterations) + " iterations"
+                                    : std::string("dWorldStep (direct LCP)"))
+      << (stepper == "auto" ? " (auto: dWorldStep up to 10 free blocks)" : "");
+    note(n);
+    if (matched_)
+        n << "matched contact: kn*A/4 per contact (A = smaller bottom-face area of the pair) as soft_erp = "
+             "h*k/(h*k+c), soft_cfm = 1/(h*k+c); no correcting-velocity cap";
+    else
+        n << "rigid contact: erp " << erp << ", cfm " << cfm << ", contact max correcting velocity "
+          << max_correcting << " m/s, restitution " << scene_.contact.restitution;
+    note(n);
+    n << "friction: dContactApprox1, mu " << scene_.contact.friction
+      << " per contact in two directions (pyramid); no elastic stick before slip";
+    note(n);
+    if (scene_.contact.ks > 0) {
+        n << "shear stiffness ks: ignored (velocity-level friction)";
+        note(n);
+    }
+    if (scene_.damping.alpha > 0) {
+        n << "mass-proportional damping: velocities scaled by exp(-alpha*dt) after each step";
+        note(n);
+    }
+    if (scene_.damping.beta > 0) {
+        n << "stiffness-proportional damping: beta ignored (rigid bodies)";
+        note(n);
+    }
+    n << "auto-disable: off; energy: contact energy 1/2 k d^2 per contact in matched mode, 0 in rigid "
+         "mode; dissipated energy not computed (reported 0)";
+    note(n);
+    for (const auto& b : blocks_)
+        if (!b.is_box) {
+            n << "general hexahedra: dCreateConvex (" << dGetConfiguration() << ")";
+            note(n);
+            break;
+        }
+}
+
+void OdeBackend::near_callback(void* self, dGeomID a, dGeomID b) {
+    static_cast<OdeBackend*>(self)->collide(a, b);
+}
+
+void OdeBackend::collide(dGeomID ga, dGeomID gb) {
+    dBodyID ba = dGeomGetBody(ga), bb = dGeomGetBody(gb);
+    if (!ba && !bb) return;   // two fixed blocks
+    constexpr int kMax = 4;
+    dContact c[kMax];
+    int n = dCollide(ga, gb, kMax, &c[0].geom, sizeof(dContact));
+    if (n == 0) return;
+    const auto& a = blocks_[reinterpret_cast<intptr_t>(dGeomGetData(ga))];
+    const auto& b = blocks_[reinterpret_cast<intptr_t>(dGeomGetData(gb))];
+    PointSpring s;
+    if (matched_) s = a.fixed ? matched_point_spring(scene_, b, &a) : matched_point_spring(scene_, a, &b);
+    for (int i = 0; i < n; ++i) {
+        dSurfaceParameters& sp = c[i].surface;
+        sp.mode = dContactApprox1;
+        sp.mu = scene_.contact.friction;
+        if (scene_.contact.restitution > 0) {
+            sp.mode |= dContactBounce;
+            sp.bounce = scene_.contact.restitution;
+            sp.bounce_vel = 0.0;
+        }
+        if (matched_) {
+            sp.mode |= dContactSoftERP | dContactSoftCFM;
+            const double denom = dt_ * s.stiffness + s.damping;
+            sp.soft_erp = dt_ * s.stiffness / denom;
+            sp.soft_cfm = 1.0 / denom;
+            contact_energy_ += 0.5 * s.stiffness * c[i].geom.depth * c[i].geom.depth;
+        }
+        dJointID j = dJointCreateContact(world_, contacts_, &c[i]);
+        dJointAttach(j, ba, bb);
+        ++contact_count_;
+    }
+}
+
+double OdeBackend::load_power() const {
+    double power = 0.0;
+    for (const LoadDef& l : scene_.loads) {
+        double f = l.factor(t_);
+        if (f == 0.0 || !bodies_[l.block]) continue;
+        Vec3 p = block_point_world(blocks_[l.block], com(l.block), orientation(l.block), l.point);
+        dVector3 v;
+        dBodyGetPointVel(bodies_[l.block], p.x(), p.y(), p.z(), v);
+        power += f * l.force.dot(Vec3(v[0], v[1], v[2]));
+    }
+    return power;
+}
+
+StepStatus OdeBackend::step() {
+    // loads at their material points (ODE clears accumulated forces after each step)
+    for (const LoadDef& l : scene_.loads) {
+        double f = l.factor(t_);
+        if (f == 0.0 || !bodies_[l.block]) continue;
+        Vec3 p = block_point_world(blocks_[l.block], com(l.block), orientation(l.block), l.point);
+        Vec3 force = f * l.force;
+        dBodyAddForceAtPos(bodies_[l.block], force.x(), force.y(), force.z(), p.x(), p.y(), p.z());
+    }
+    double p0 = load_power();
+    contact_energy_ = 0.0;
+    contact_count_ = 0;
+    dSpaceCollide(space_, this, &OdeBackend::near_callback);
+    if (quickstep_) dWorldQuickStep(world_, dt_);
+    else dWorldStep(world_, dt_);
+    dJointGroupEmpty(contacts_);
+    t_ += dt_;
+    if (scene_.damping.alpha > 0) {
+        const double k = std::exp(-scene_.damping.alpha * dt_);
+        for (dBodyID b : bodies_) {
+            if (!b) continue;
+            const dReal* v = dBodyGetLinearVel(b);
+            const dReal* w = dBodyGetAngularVel(b);
+            dBodySetLinearVel(b, k * v[0], k * v[1], k * v[2]);
+            dBodySetAngularVel(b, k * w[0], k * w[1], k * w[2]);
+        }
+    }
+    external_work_ += 0.5 * (p0 + load_power()) * dt_;
+    for (size_t i = 0; i < bodies_.size(); ++i)
+        if (bodies_[i] && !com(static_cast<int>(i)).allFinite()) {
+            failure_ = "block '" + blocks_[i].name + "' position is not finite at t = " + std::to_string(t_) + " s";
+            return StepStatus::unstable;
+        }
+    return StepStatus::ok;
+}
+
+Sample OdeBackend::sample() const {
+    Sample s;
+    s.t = t_;
+    for (const RigidBlock& b : blocks_) {
+        if (b.fixed) continue;
+        dBodyID body = bodies_[b.index];
+        BlockState st;
+        st.position = com(b.index);
+        st.orientation = orientation(b.index).normalized();
+        const dReal* v = dBodyGetLinearVel(body);
+        const dReal* w = dBodyGetAngularVel(body);
+        st.velocity = Vec3(v[0], v[1], v[2]);
+        st.angular_velocity = Vec3(w[0], w[1], w[2]);
+        s.energy.kinetic += kinetic_energy(b, st.orientation, st.velocity, st.angular_velocity);
+        s.energy.potential += potential_energy(b, scene_.gravity, st.position);
+        s.blocks.push_back(st);
+    }
+    for (const ProbeDef& p : scene_.probes)
+        s.probes.push_back(block_point_world(blocks_[p.block], com(p.block), orientation(p.block), p.point));
+    s.energy.external = external_work_;
+    s.energy.contact = contact_energy_;
+    s.contacts = contact_count_;
+    return s;
+}
+
+}  // namespace
+
+BackendInfo ode_backend_info() {
+    BackendInfo info;
+    info.name = "ode";
+    info.description = "Open Dynamics Engine 0.16 rigid bodies (double); contact rigid or matched (soft ERP/CFM)";
+    info.capabilities = ode_capabilities();
+    info.make = [] { return std::make_unique<OdeBackend>(); };
+    return info;
+}
+
+}  // namespace cairn
