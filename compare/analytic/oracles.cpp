@@ -33,12 +33,12 @@ double HousnerBlock::radius() const { return std::sqrt(b * b + h * h); }
 double HousnerBlock::p() const { return std::sqrt(3.0 * g / (4.0 * radius())); }
 
 double HousnerBlock::first_impact(double theta0) const {
-    // t1 = ∫0^θ0 dθ / √(2p²[cos(α−θ) − cos(α−θ0)]); substitute θ = θ0 − θ0·s² to remove the
+    // t1 = ∫0^θ0 dθ / √(2p²[cos(α−θ0) − cos(α−θ)]) (energy from rest at θ0); substitute θ = θ0 − θ0·s² to remove the
     // inverse-square-root singularity at θ0, then Gauss-Legendre on s ∈ [0, 1]
     const double a = alpha(), p2 = p() * p();
     auto integrand = [&](double s) {
         double th = theta0 * (1.0 - s * s);
-        double den = 2.0 * p2 * (std::cos(a - th) - std::cos(a - theta0));
+        double den = 2.0 * p2 * (std::cos(a - theta0) - std::cos(a - th));
         return den > 0.0 ? 2.0 * theta0 * s / std::sqrt(den) : 0.0;
     };
     // composite 8-point Gauss over 64 panels: smooth integrand after the substitution

@@ -1,0 +1,72 @@
+// A rigid block released tilted rocks about its edge; first impact against Housner (1963).
+#include <catch2/catch.hpp>
+
+#include <cmath>
+
+#include "analytic/oracles.hpp"
+#include "dem_test_util.hpp"
+#include "support/scene_builder.hpp"
+
+using namespace cairn;
+
+namespace {
+
+// block of width w (x) and depth d (y), height h, resting on its +x bottom edge, tilted theta0
+// about y so that its centre of mass lies inside the edge; a fixed 2 x 2 x 1 m base
+Scene rocking_scene(double w, double d, double h, double theta0, double kn) {
+    Scene s = test::stone_scene(0.8);
+    s.contact.kn = s.contact.ks = kn;
+    s.run.duration = 1.0;
+    test::add_box_rotated_about(s, "A", Vec3(w, d, h), Vec3(0, 0, 0.5 * h), theta0, Vec3(0.5 * w, 0, 0), false);
+    test::add_box(s, "B", Vec3(2, 2, 1), Vec3(0, 0, -0.5), true);
+    return s;
+}
+
+// time at which the tilt about y first crosses zero, s (linear interpolation); -1 if never
+double first_impact(Backend& b, double duration, double* min_tilt) {
+    double t_prev = 0, th_prev = 0, hit = -1;
+    *min_tilt = 0;
+    test::run_dem(b, duration, [&](const Sample& s) {
+        Eigen::AngleAxisd aa(s.blocks[0].orientation);
+        double th = aa.angle() * aa.axis().y();
+        if (hit < 0 && s.t > 0 && th_prev > 0 && th <= 0) hit = t_prev + th_prev / (th_prev - th) * (s.t - t_prev);
+        *min_tilt = std::min(*min_tilt, th);
+        t_prev = s.t;
+        th_prev = th;
+    });
+    return hit;
+}
+
+}  // namespace
+
+TEST_CASE("paper case (e), reading B: a 0.7 x 1.0 m block tilted 30 deg rocks about its edge", "[dem][rocking]") {
+    oracle::HousnerBlock hb{0.35, 0.5, 9.81};
+    const double theta0 = M_PI / 6;
+    REQUIRE(hb.first_impact(theta0) == Approx(0.76160).epsilon(1e-4));
+    for (double kn : {3e7, 3e8}) {
+        auto b = test::build_dem(rocking_scene(0.7, 0.2, 1.0, theta0, kn));
+        double min_tilt;
+        double t1 = first_impact(*b, 1.2, &min_tilt);
+        INFO("kn = " << kn << ", first impact " << t1 << " s");
+        // physics.md: a 2-D sketch of this case with 8 points across the 0.7 m face was +0.13 %
+        // late at kn = 3e7 and within 0.02 % at 3e8; the issue allows 2 % for the DEM at the
+        // paper's stiffness and closer as kn grows: 1 % and 0.5 % here
+        CHECK(t1 == Approx(hb.first_impact(theta0)).epsilon(kn < 1e8 ? 0.01 : 0.005));
+        // after the impact it rocks onto the other edge
+        CHECK(min_tilt < -0.05);
+    }
+}
+
+TEST_CASE("slender block (0.2 x 1.0 m) rocks with Housner's first impact at a stiff contact", "[dem][rocking]") {
+    oracle::HousnerBlock hb{0.1, 0.5, 9.81};
+    for (double frac : {0.5, 0.8}) {
+        const double theta0 = frac * hb.alpha();
+        auto b = test::build_dem(rocking_scene(0.2, 0.7, 1.0, theta0, 3e9));
+        double min_tilt;
+        double t1 = first_impact(*b, 0.8, &min_tilt);
+        INFO("theta0 = " << frac << " alpha, first impact " << t1 << " s");
+        // physics.md: at kn = 3e9 a 2-D model was within 0.01 % for every grid; 0.5 % leaves
+        // room for the 3-D block's edge springs and the sampling of the crossing
+        CHECK(t1 == Approx(hb.first_impact(theta0)).epsilon(0.005));
+    }
+}
