@@ -3,4 +3,4 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/setup.sh
-build/app/cairn run-all --out out/
+"${CAIRN_BUILD_DIR:-build}/app/cairn" run-all --out out/

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Set-up of a Debian 12 machine for cairn, then a Release build in build/.
+# Set-up of a Debian 12 machine for cairn, then a Release build in build/ (or $CAIRN_BUILD_DIR).
 # Idempotent: installs only the Debian packages that are missing, and says nothing when all are there.
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -41,5 +41,7 @@ if ((${#missing[@]})); then
   fi
 fi
 
-cmake -S . -B build -DCMAKE_BUILD_TYPE=Release >/dev/null
-cmake --build build -j"$(nproc)" >/dev/null
+# the build directory: build/ unless CAIRN_BUILD_DIR says otherwise
+build="${CAIRN_BUILD_DIR:-build}"
+cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=Release >/dev/null
+cmake --build "$build" -j"$(nproc)" >/dev/null
