@@ -179,7 +179,8 @@ ContactTotals ContactSet::apply(std::vector<Block>& blocks, double dt) {
             Vec3 fs = Vec3::Zero();
             if (law_.ks > 0.0 && fn > 0.0) {
                 if (anchor.side != side) anchor = Anchor{side, pr.xi};
-                Vec3 u = pr.point - quad_point(tq, anchor.xi0);
+                const Vec3 x0_old = quad_point(tq, anchor.xi0);
+                Vec3 u = pr.point - x0_old;
                 u -= u.dot(n) * n;
                 Vec3 vt_rel = vrel - vrel.dot(n) * n;
                 const double ks_a = law_.ks * a;
@@ -194,8 +195,10 @@ ContactTotals ContactSet::apply(std::vector<Block>& blocks, double dt) {
                     // slip: the anchor follows so that the spring carries exactly μ·Fn
                     fs = cap * trial / trial.norm();
                     Vec3 x0 = pr.point + fs / ks_a;
-                    anchor.xi0 = project(tq, x0, pr.xi).xi;
-                    tot.dissipated += 0.5 * ks_a * u.squaredNorm() - 0.5 * fs.squaredNorm() / ks_a;
+                    Projection moved = project(tq, x0, pr.xi);
+                    anchor.xi0 = moved.xi;
+                    // friction work: the force at the cap times the distance the anchor slipped
+                    tot.dissipated += fs.norm() * (moved.point - x0_old).norm();
                     tot.stored += 0.5 * fs.squaredNorm() / ks_a;
                 }
             } else {
