@@ -4,6 +4,8 @@
 #include <cmath>
 #include <functional>
 
+#include <Eigen/Cholesky>
+
 #include "engine_scenes.hpp"
 #include "registry.hpp"
 
@@ -106,14 +108,20 @@ TEST_CASE("reference engines: H = 0.5 W slides at mu = 0.4 and holds at mu = 0.6
     h.force = Vec3(0, 0.5 * weight, 0);
     h.point = Vec3::Zero();   // at the centroid: no tipping (physics.md case c)
     s.loads.push_back(h);
-    double v1 = 0.0, v2 = 0.0, y_end = 0.0;
+    // least-squares fit y = c0 + c1 t + c2 t² over 0.1 ... 0.5 s: a = 2 c2, insensitive to the
+    // small rocking of a soft contact under the off-base push
+    Eigen::Matrix3d normal = Eigen::Matrix3d::Zero();
+    Eigen::Vector3d rhs = Eigen::Vector3d::Zero();
+    double y_end = 0.0;
     run(engine, s, "rigid", 0.5, [&](const Sample& x) {
-        if (std::abs(x.t - 0.1) < 1e-7) v1 = x.blocks[0].velocity.y();
-        if (std::abs(x.t - 0.5) < 1e-7) v2 = x.blocks[0].velocity.y();
         y_end = x.blocks[0].position.y();
+        if (x.t < 0.1 - 1e-9) return;
+        Eigen::Vector3d basis(1.0, x.t, x.t * x.t);
+        normal += basis * basis.transpose();
+        rhs += basis * y_end;
     });
     if (mu == 0.4) {
-        const double a = (v2 - v1) / 0.4;
+        const double a = 2.0 * normal.ldlt().solve(rhs)[2];
         CAPTURE(a);
         // the issue's criterion: a = (H/W - mu) g = 0.1 g within 2 %
         CHECK(a == Approx(0.1 * g).epsilon(0.02));

@@ -1,0 +1,12 @@
+#pragma once
+/// MuJoCo 2.2.2 as a cairn backend ("mujoco"); the model is MJCF text built in memory.
+
+#include "backend/backend.hpp"
+#include "registry.hpp"
+
+namespace cairn {
+
+/// registry entry of the MuJoCo backend: name, description, capability matrix row, factory
+BackendInfo mujoco_backend_info();
+
+}  // namespace cairn
