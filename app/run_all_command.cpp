@@ -111,7 +111,8 @@ int run_all_command(const RunAllOptions& options) {
         }
     }
     print_table(rows);
-    std::printf("\noutputs in %s/<scene>/<backend>/\n", options.out_dir.c_str());
+    const auto where = std::filesystem::path(options.out_dir) / "<scene>" / "<backend>";
+    std::printf("\noutputs in %s\n", where.string().c_str());
     return failed ? kExitFailure : kExitOk;
 }
 
