@@ -1,10 +1,28 @@
 #include "block.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 namespace cairn::dem {
 
+int Block::face_at(int s, const Vec2& xi) const {
+    const int nu = mesh.side_nu[s], nv = mesh.side_nv[s];
+    int u = std::clamp(int(std::floor(0.5 * (xi[0] + 1.0) * nu)), 0, nu - 1);
+    int v = std::clamp(int(std::floor(0.5 * (xi[1] + 1.0) * nv)), 0, nv - 1);
+    return mesh.side_grid[s][v * nu + u];
+}
+
+Vec3 Block::world_point(const Vec3& frame_point) const {
+    return body.x + body.q * (frame_point - com_in_frame);
+}
+
 void Block::update_nodes() {
+    if (deformable) {
+        Mat3 r;
+        deformable->pose(x, body.x, r);
+        body.q = Quat(r);
+        return;
+    }
     Mat3 r = body.q.toRotationMatrix();
     Vec3 w = fixed ? Vec3::Zero() : body.omega();
     for (size_t i = 0; i < local.size(); ++i) {

@@ -14,8 +14,8 @@ void ContactSet::configure(const ContactLaw& law, double margin) {
     margin_ = margin;
 }
 
-bool is_target(const std::vector<Block>& blocks, int h, int face, int t, int side) {
-    double ah = blocks[h].face_area[face], at = blocks[t].face_area[side];
+bool is_target(const std::vector<Block>& blocks, int h, int hit_side, int t, int target_side) {
+    double ah = blocks[h].side_area[hit_side], at = blocks[t].side_area[target_side];
     double tol = 1e-9 * std::max(ah, at);
     if (at > ah + tol) return true;
     if (ah > at + tol) return false;
@@ -40,9 +40,9 @@ void ContactSet::refresh(std::vector<Block>& blocks) {
     for (auto [i, j] : overlapping_pairs(boxes)) {
         if (blocks[i].fixed && blocks[j].fixed) continue;
         for (auto [h, t] : {std::pair<int, int>{i, j}, std::pair<int, int>{j, i}}) {
-            for (int f = 0; f < int(blocks[h].faces.size()); ++f) {
+            for (int f = 0; f < int(blocks[h].mesh.faces.size()); ++f) {
                 Aabb fb;
-                for (int n : blocks[h].faces[f]) fb.add(blocks[h].x[n]);
+                for (int n : blocks[h].mesh.faces[f]) fb.add(blocks[h].x[n]);
                 fb.inflate(0.5 * margin_);
                 if (!fb.overlaps(boxes[t])) continue;
                 Candidate c{h, f, t, {}};
@@ -65,8 +65,8 @@ struct TargetSides {
 
 TargetSides sides_of(const Block& b) {
     TargetSides s;
-    for (size_t k = 0; k < b.faces.size(); ++k) {
-        Quad q = b.face_quad(int(k));
+    for (int k = 0; k < 6; ++k) {
+        Quad q = b.side_quad(k);
         s.normal.push_back(quad_normal(q, Vec2::Zero()));
         s.centre.push_back(0.25 * (q[0] + q[1] + q[2] + q[3]));
     }
@@ -76,7 +76,7 @@ TargetSides sides_of(const Block& b) {
 // spread a force at natural coordinates xi of face k of block b to its nodes
 void spread(Block& b, int k, const Vec2& xi, const Vec3& force) {
     auto w = quad_weights(xi);
-    for (int i = 0; i < 4; ++i) b.f[b.faces[k][i]] += w[i] * force;
+    for (int i = 0; i < 4; ++i) b.f[b.mesh.faces[k][i]] += w[i] * force;
 }
 
 double reduced_mass(const Block& a, const Block& b) {
@@ -91,8 +91,8 @@ ContactTotals ContactSet::apply(std::vector<Block>& blocks, double dt) {
     ContactTotals tot;
     int cached_h = -1, cached_t = -1;
     TargetSides sides;
-    std::vector<int> best_face;  // per target side: the hitting block's face most opposed to it
-    std::vector<char> target_ok; // per target side: it is the target for its best face
+    std::vector<int> best_side(6);  // per target side: the hitting block's side most opposed to it
+    std::vector<char> target_ok(6); // per target side: it is the target for that side
     double flush_tol = 0.0, closer_tol = 0.0;
     for (auto& c : candidates_) {
         Block& hb = blocks[c.hit_block];
@@ -101,22 +101,22 @@ ContactTotals ContactSet::apply(std::vector<Block>& blocks, double dt) {
             cached_h = c.hit_block;
             cached_t = c.target_block;
             sides = sides_of(tb);
-            std::vector<Vec3> hn(hb.faces.size());
-            for (size_t f = 0; f < hb.faces.size(); ++f) hn[f] = quad_normal(hb.face_quad(int(f)), Vec2::Zero());
-            best_face.assign(tb.faces.size(), -1);
-            for (size_t s = 0; s < tb.faces.size(); ++s) {
+            TargetSides hsides = sides_of(hb);
+            for (int s = 0; s < 6; ++s) {
                 double best = 0.0;
-                for (size_t f = 0; f < hb.faces.size(); ++f) {
-                    double d = hn[f].dot(sides.normal[s]);
-                    if (d < best) best = d, best_face[s] = int(f);
+                best_side[s] = -1;
+                for (int f = 0; f < 6; ++f) {
+                    double d = hsides.normal[f].dot(sides.normal[s]);
+                    if (d < best) best = d, best_side[s] = f;
                 }
+                target_ok[s] = best_side[s] >= 0 && is_target(blocks, c.hit_block, best_side[s], c.target_block, s);
             }
-            target_ok.assign(tb.faces.size(), 0);
-            for (size_t s = 0; s < tb.faces.size(); ++s)
-                target_ok[s] = best_face[s] >= 0 && is_target(blocks, c.hit_block, best_face[s], c.target_block, int(s));
-            flush_tol = 1e-9 * tb.r_max;
+            // a hitting point up to 1e-4 of the edge outside a side plane still counts as over
+            // the target side: flush edges (stacked blocks) stay in contact as they bulge
+            flush_tol = 1e-4 * tb.min_edge;
             closer_tol = 0.25 * tb.min_edge;
         }
+        const int hit_side = hb.mesh.face_side[c.hit_face];
         const Quad hq = hb.face_quad(c.hit_face);
         const auto& pts = hb.hits[c.hit_face];
         // damping coefficients per unit tributary area, N·s/m³
@@ -125,7 +125,7 @@ ContactTotals ContactSet::apply(std::vector<Block>& blocks, double dt) {
             cn_area = law_.damping * law_.kn;
             ct_area = law_.damping * law_.ks;
         } else if (law_.damping_rule == ContactDampingRule::ratio) {
-            double m = reduced_mass(hb, tb), area = hb.face_area[c.hit_face];
+            double m = reduced_mass(hb, tb), area = hb.side_area[hit_side];
             cn_area = 2.0 * law_.damping * std::sqrt(law_.kn * m / area);
             ct_area = 2.0 * law_.damping * std::sqrt(law_.ks * m / area);
         }
@@ -138,7 +138,7 @@ ContactTotals ContactSet::apply(std::vector<Block>& blocks, double dt) {
             int side = -1;
             double d_side = 0.0;
             for (size_t s = 0; s < sides.normal.size(); ++s) {
-                if (best_face[s] != c.hit_face || !target_ok[s]) continue;
+                if (best_side[s] != hit_side || !target_ok[s]) continue;
                 double d = sides.normal[s].dot(xp - sides.centre[s]);
                 if (side < 0 || d > d_side) side = int(s), d_side = d;
             }
@@ -152,7 +152,10 @@ ContactTotals ContactSet::apply(std::vector<Block>& blocks, double dt) {
                 anchor.side = -1;
                 continue;
             }
-            const Quad tq = tb.face_quad(side);
+            // the target face: the side's boundary face under the point (rigid: the side itself)
+            int face = tb.mesh.side_grid[side][0];
+            if (tb.mesh.side_grid[side].size() > 1) face = tb.face_at(side, project(tb.side_quad(side), xp).xi);
+            const Quad tq = tb.face_quad(face);
             Projection pr = project(tq, xp);
             const Vec3& n = pr.normal;
             const double depth = n.dot(pr.point - xp);
@@ -165,8 +168,8 @@ ContactTotals ContactSet::apply(std::vector<Block>& blocks, double dt) {
             Vec3 vh = Vec3::Zero(), vt = Vec3::Zero();
             auto wh = quad_weights(pts[k].xi), wt = quad_weights(pr.xi);
             for (int i = 0; i < 4; ++i) {
-                vh += wh[i] * hb.v[hb.faces[c.hit_face][i]];
-                vt += wt[i] * tb.v[tb.faces[side][i]];
+                vh += wh[i] * hb.v[hb.mesh.faces[c.hit_face][i]];
+                vt += wt[i] * tb.v[tb.mesh.faces[face][i]];
             }
             const Vec3 vrel = vh - vt;
             const double closing = -vrel.dot(n);
@@ -178,8 +181,8 @@ ContactTotals ContactSet::apply(std::vector<Block>& blocks, double dt) {
             // shear: elastic from the stick anchor, capped at μ·Fn
             Vec3 fs = Vec3::Zero();
             if (law_.ks > 0.0 && fn > 0.0) {
-                if (anchor.side != side) anchor = Anchor{side, pr.xi};
-                const Vec3 x0_old = quad_point(tq, anchor.xi0);
+                if (anchor.side != side) anchor = Anchor{side, face, pr.xi};
+                const Vec3 x0_old = quad_point(tb.face_quad(anchor.face), anchor.xi0);
                 Vec3 u = pr.point - x0_old;
                 u -= u.dot(n) * n;
                 Vec3 vt_rel = vrel - vrel.dot(n) * n;
@@ -196,6 +199,7 @@ ContactTotals ContactSet::apply(std::vector<Block>& blocks, double dt) {
                     fs = cap * trial / trial.norm();
                     Vec3 x0 = pr.point + fs / ks_a;
                     Projection moved = project(tq, x0, pr.xi);
+                    anchor.face = face;
                     anchor.xi0 = moved.xi;
                     // friction work: the force at the cap times the distance the anchor slipped
                     tot.dissipated += fs.norm() * (moved.point - x0_old).norm();
@@ -206,7 +210,7 @@ ContactTotals ContactSet::apply(std::vector<Block>& blocks, double dt) {
             }
             const Vec3 force = fn * n + fs;
             spread(hb, c.hit_face, pts[k].xi, force);
-            spread(tb, side, pr.xi, -force);
+            spread(tb, face, pr.xi, -force);
             ++tot.active;
         }
     }

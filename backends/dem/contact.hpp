@@ -13,7 +13,8 @@ namespace cairn::dem {
 
 /// Stick anchor of one hitting point.
 struct Anchor {
-    int side = -1;              ///< target face the point is anchored on; -1 = not in contact
+    int side = -1;              ///< target side the point acts on; -1 = not in contact
+    int face = -1;              ///< target boundary face the stick point lies on
     Vec2 xi0 = Vec2::Zero();    ///< natural coordinates of the stick point on that face
 };
 
@@ -52,9 +53,9 @@ private:
     std::vector<Candidate> candidates_;
 };
 
-/// true when face `side` of block t is the target of face `face` of block h by the paper's rule
-/// (the larger face is the target; equal faces: a fixed block, then the larger block, then the
-/// lower index is the target)
-bool is_target(const std::vector<Block>& blocks, int h, int face, int t, int side);
+/// true when side `target_side` of block t is the target of side `hit_side` of block h by the
+/// paper's rule (the larger face is the target; equal faces: a fixed block, then the larger
+/// block, then the lower index is the target)
+bool is_target(const std::vector<Block>& blocks, int h, int hit_side, int t, int target_side);
 
 }  // namespace cairn::dem

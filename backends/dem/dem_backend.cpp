@@ -6,6 +6,7 @@
 
 #include "error.hpp"
 #include "time_step.hpp"
+#include "geometry/hexahedron.hpp"
 #include "world.hpp"
 
 namespace cairn {
@@ -20,28 +21,28 @@ public:
     void build(const Scene& scene, const RunOptions& options) override {
         scene_ = scene;
         for (const auto& [key, s] : scene_.backend_settings["dem"])
-            throw Error(s.origin + ": backends.dem." + key + ": unknown setting of backend dem (it has none yet)");
-        for (const auto& b : scene_.blocks)
-            if (b.model == BlockModel::deformable && !b.fixed)
-                throw Error("backend dem: block '" + b.name +
-                            "' asks for the deformable model, which this build does not have yet; "
-                            "run with --model rigid");
-        std::vector<dem::Block> blocks;
+            throw Error(s.origin + ": backends.dem." + key + ": unknown setting of backend dem (it has none)");
         double min_edge = 1e300;
-        for (const auto& def : scene_.blocks) {
-            blocks.push_back(dem::make_rigid_block(def, scene_.materials[def.material], scene_.contact.grid_spacing));
-            min_edge = std::min(min_edge, blocks.back().min_edge);
-        }
-        critical_ = dem::critical_step(blocks, scene_.contact);
+        for (const auto& def : scene_.blocks)
+            for (int s = 0; s < 6; ++s)
+                for (int i = 0; i < 4; ++i)
+                    min_edge = std::min(min_edge, (def.corners[kFaceCorners[s][(i + 1) % 4]] - def.corners[kFaceCorners[s][i]]).norm());
+        margin_ = scene_.run.contact_margin ? *scene_.run.contact_margin : 0.05 * min_edge;
+        world_ = std::make_unique<dem::World>(scene_, margin_);
+        contact_critical_ = dem::contact_critical_step(world_->blocks(), scene_.contact);
+        element_critical_ = dem::element_critical_step(world_->blocks());
+        critical_ = contact_critical_;
+        if (element_critical_ > 0.0 && (critical_ == 0.0 || element_critical_ < critical_)) critical_ = element_critical_;
         if (scene_.run.dt) {
             dt_ = *scene_.run.dt;
         } else {
-            if (!(critical_ > 0.0))
-                throw Error(scene_.source + ": run.dt = \"auto\": no contact stiffness to derive a step from; give run.dt");
-            dt_ = scene_.run.dt_safety * critical_;
+            double dt_c = scene_.run.dt_safety * contact_critical_;
+            double dt_e = scene_.run.element_dt_safety * element_critical_;
+            dt_ = dt_c > 0.0 && (dt_e == 0.0 || dt_c < dt_e) ? dt_c : dt_e;
+            if (!(dt_ > 0.0))
+                throw Error(scene_.source + ": run.dt = \"auto\": no contact stiffness or element to derive a step from; give run.dt");
         }
-        margin_ = scene_.run.contact_margin ? *scene_.run.contact_margin : 0.05 * min_edge;
-        world_ = std::make_unique<dem::World>(scene_, dt_, margin_);
+        world_->start(dt_);
     }
 
     double time_step() const override { return dt_; }
@@ -59,19 +60,24 @@ public:
         Sample s;
         s.t = world_->time();
         const auto& blocks = world_->blocks();
-        for (const auto& p : scene_.probes) s.probes.push_back(blocks[p.block].world_point(p.point));
+        for (size_t i = 0; i < scene_.probes.size(); ++i) s.probes.push_back(world_->probe(int(i)));
         for (const auto& b : blocks) {
             if (b.fixed) continue;
             BlockState st;
             st.position = b.body.x;
             st.orientation = b.body.q;
-            st.velocity = b.body.v;
-            st.angular_velocity = b.body.omega();
+            if (b.deformable) {
+                b.deformable->motion(b.x, b.v, st.velocity, st.angular_velocity);
+            } else {
+                st.velocity = b.body.v;
+                st.angular_velocity = b.body.omega();
+            }
             s.blocks.push_back(st);
         }
         s.energy.kinetic = world_->kinetic();
         s.energy.potential = world_->potential();
         s.energy.contact = world_->energy().contact;
+        s.energy.strain = world_->energy().strain;
         s.energy.dissipated = world_->energy().dissipated;
         s.energy.external = world_->energy().external;
         s.contacts = world_->active_contacts();
@@ -88,8 +94,18 @@ public:
             o << v;
             return o.str();
         };
-        n.push_back("model: rigid blocks, central differences (kick-drift-kick), implicit-midpoint rotation");
-        n.push_back("critical step of the contact springs (s): " + num(critical_));
+        n.push_back("integrator: central differences (kick-drift-kick); rigid blocks rotate by implicit midpoint");
+        for (const auto& b : scene_.blocks) {
+            if (b.fixed) continue;
+            std::string m = "block " + b.name + ": " + to_string(b.model);
+            if (b.model == BlockModel::deformable)
+                m += ", " + std::to_string(b.mesh.divisions[0]) + "x" + std::to_string(b.mesh.divisions[1]) + "x" +
+                     std::to_string(b.mesh.divisions[2]) + " hex8 (St. Venant-Kirchhoff, 2x2x2 Gauss), mass " +
+                     to_string(b.mesh.mass);
+            n.push_back(m);
+        }
+        n.push_back("critical step of the contact springs (s): " + num(contact_critical_));
+        if (element_critical_ > 0.0) n.push_back("critical step of the elements (s): " + num(element_critical_));
         n.push_back("time step (s): " + num(dt_) + (scene_.run.dt ? " (given)" : " (auto)"));
         if (critical_ > 0.0 && dt_ > critical_)
             n.push_back("warning: the time step exceeds the critical step estimate; the run may blow up");
@@ -107,7 +123,7 @@ public:
 private:
     Scene scene_;
     std::unique_ptr<dem::World> world_;
-    double dt_ = 0.0, critical_ = 0.0, margin_ = 0.0;
+    double dt_ = 0.0, critical_ = 0.0, contact_critical_ = 0.0, element_critical_ = 0.0, margin_ = 0.0;
     std::string failure_;
 };
 
@@ -116,15 +132,15 @@ private:
 BackendInfo dem_backend_info() {
     BackendInfo info;
     info.name = "dem";
-    info.description = "in-house discrete element engine (the paper's contact law), rigid blocks";
+    info.description = "in-house discrete element engine (the paper's contact law), rigid or deformable hex8 blocks";
     info.capabilities = {
         {"penalty stiffness kn·A", Support::exact, "kn·a per hitting point (corners + virtual grid)"},
         {"normal contact damping", Support::exact, "dashpot per hitting point (ratio ζ or time γ)"},
         {"elastic stick before slip", Support::exact, "shear spring ks·a from a stored stick anchor"},
         {"friction shape", Support::exact, "Coulomb disc per hitting point"},
         {"mass-proportional damping", Support::exact, "α·M, implicit in the kick"},
-        {"stiffness-proportional damping", Support::none, "rigid blocks have no element stiffness"},
-        {"deformable blocks", Support::none, "not built yet: refused"},
+        {"stiffness-proportional damping", Support::exact, "deformable blocks: strain-rate (Kelvin-Voigt) β·C:Ė; rigid blocks have none"},
+        {"deformable blocks", Support::exact, "hex8 St. Venant-Kirchhoff, total Lagrangian; lumped, consistent, barycentre or corrected mass"},
         {"general convex hexahedra", Support::exact, "planar-faced convex hexahedra"},
     };
     info.make = [] { return std::make_unique<DemBackend>(); };

@@ -6,14 +6,14 @@
 
 namespace cairn::dem {
 
-double face_contact_omega2(const Block& b, int face, const ContactLaw& law) {
+double side_contact_omega2(const Block& b, int side, const ContactLaw& law) {
     using Mat6 = Eigen::Matrix<double, 6, 6>;
     using Vec6 = Eigen::Matrix<double, 6, 1>;
-    const Quad q = b.face_quad(face);
+    const Quad q = b.side_quad(side);
     const Vec3 n = quad_normal(q, Vec2::Zero());
     const Vec3 t1 = n.unitOrthogonal(), t2 = n.cross(t1);
     Mat6 k = Mat6::Zero();
-    for (const auto& p : b.hits[face]) {
+    for (const auto& p : hit_grid(q, law.grid_spacing)) {
         Vec3 r = quad_point(q, p.xi) - b.body.x;
         auto add = [&](const Vec3& d, double stiff) {
             Vec6 g;
@@ -38,12 +38,12 @@ double face_contact_omega2(const Block& b, int face, const ContactLaw& law) {
     return es.eigenvalues().maxCoeff();
 }
 
-double critical_step(const std::vector<Block>& blocks, const ContactLaw& law) {
+double contact_critical_step(const std::vector<Block>& blocks, const ContactLaw& law) {
     std::vector<double> per_block;
     for (const auto& b : blocks) {
         if (b.fixed) continue;
         double w2 = 0.0;
-        for (int f = 0; f < int(b.faces.size()); ++f) w2 = std::max(w2, face_contact_omega2(b, f, law));
+        for (int s = 0; s < 6; ++s) w2 = std::max(w2, side_contact_omega2(b, s, law));
         per_block.push_back(w2);
     }
     if (per_block.empty()) return 0.0;
@@ -55,6 +55,17 @@ double critical_step(const std::vector<Block>& blocks, const ContactLaw& law) {
     if (law.damping_rule == ContactDampingRule::ratio) zeta = law.damping;
     if (law.damping_rule == ContactDampingRule::time) zeta = 0.5 * law.damping * w;
     return 2.0 / w * (std::sqrt(1.0 + zeta * zeta) - zeta);
+}
+
+double element_critical_step(const std::vector<Block>& blocks) {
+    double dt = 0.0;
+    for (const auto& b : blocks) {
+        if (!b.deformable || b.fixed) continue;
+        const double w = b.deformable->max_element_omega(), zeta = 0.5 * b.deformable->beta() * w;
+        const double dt_b = 2.0 / w * (std::sqrt(1.0 + zeta * zeta) - zeta);
+        dt = dt == 0.0 ? dt_b : std::min(dt, dt_b);
+    }
+    return dt;
 }
 
 }  // namespace cairn::dem

@@ -8,12 +8,17 @@
 
 namespace cairn::dem {
 
-/// largest squared frequency (rad²/s²) of a free block resting with one whole face on a rigid
+/// largest squared frequency (rad²/s²) of a free block resting with one whole side on a rigid
 /// base: normal springs kn·a and shear springs ks·a at its hitting points, all six rigid modes
-double face_contact_omega2(const Block& b, int face, const ContactLaw& law);
+/// (the block's mass and rotational inertia: exact, or its mass scheme's)
+double side_contact_omega2(const Block& b, int side, const ContactLaw& law);
 
-/// critical step, s: 2/ω·(√(1+ζ²) − ζ) with ω² the sum of the two largest block values of
-/// face_contact_omega2 (one block: its own) — an upper bound on the pair's frequency
-double critical_step(const std::vector<Block>& blocks, const ContactLaw& law);
+/// critical step of the contact springs, s: 2/ω·(√(1+ζ²) − ζ) with ω² the sum of the two largest
+/// block values of side_contact_omega2 (one block: its own), an upper bound on a pair's frequency
+double contact_critical_step(const std::vector<Block>& blocks, const ContactLaw& law);
+
+/// critical step of the hex8 elements, s: min over deformable blocks of 2/ω·(√(1+ζ²) − ζ),
+/// ω the largest element frequency and ζ = β·ω/2; 0 when there is no deformable block
+double element_critical_step(const std::vector<Block>& blocks);
 
 }  // namespace cairn::dem

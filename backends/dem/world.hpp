@@ -1,10 +1,12 @@
 #pragma once
-/// The in-house engine's world: blocks, contacts, loads and the explicit step as named stages.
+/// The in-house engine's world: blocks (rigid or deformable), contacts, loads, and the explicit
+/// central-difference step as named stages.
 
 #include <string>
 #include <vector>
 
 #include "block.hpp"
+#include "block_builder.hpp"
 #include "contact.hpp"
 #include "scene/scene.hpp"
 
@@ -13,14 +15,17 @@ namespace cairn::dem {
 /// Energy accounts of the world, J.
 struct EnergyAccounts {
     double contact = 0.0;       ///< stored in contact springs now
-    double dissipated = 0.0;    ///< slip, dashpots and mass damping so far
+    double strain = 0.0;        ///< stored in deformable blocks now
+    double dissipated = 0.0;    ///< slip, dashpots, mass and stiffness damping so far
     double external = 0.0;      ///< work of the loads so far
 };
 
 class World {
 public:
-    /// build from a validated scene with time step dt (s) and broad-phase margin (m)
-    World(const Scene& scene, double dt, double margin);
+    /// build the blocks of a validated scene, with a broad-phase margin (m)
+    World(const Scene& scene, double margin);
+    /// set the time step (s) and evaluate the forces at t = 0; call once before step()
+    void start(double dt);
     /// advance one step; false if the state is no longer finite
     bool step();
     /// simulated time, s
@@ -31,12 +36,14 @@ public:
     double kinetic() const;
     /// gravitational potential energy (zero at the origin), J
     double potential() const;
+    /// world position of probe i of the scene, m
+    Vec3 probe(int i) const { return world_position(blocks_[probes_[i].block], probes_[i]); }
     /// active contact points after the last force evaluation
     int active_contacts() const { return active_; }
     /// contact refreshes forced early because a block moved more than half the margin
     int early_refreshes() const { return early_refreshes_; }
-    /// the contact set (for inspection)
-    const ContactSet& contacts() const { return contacts_; }
+    /// element updates done so far (deformable blocks)
+    long long element_updates() const { return element_updates_; }
 
 private:
     void refresh_if_due();
@@ -46,20 +53,19 @@ private:
     bool state_finite() const;
 
     const Scene& scene_;
-    double dt_;
+    double dt_ = 0.0;
     double t_ = 0.0;
-    long long step_ = 0;
     int steps_since_refresh_ = 0;
     int early_refreshes_ = 0;
+    long long element_updates_ = 0;
     std::vector<Block> blocks_;
     ContactSet contacts_;
     EnergyAccounts energy_;
     int active_ = 0;
-    std::vector<Vec3> force_, torque_;        // per block: resultant of the current step
-    std::vector<Vec3> load_point_, load_force_;// per load: last application point and force
+    std::vector<Vec3> force_, torque_;          // rigid blocks: resultant of the current step
+    std::vector<std::vector<Vec3>> accel_;      // deformable blocks: nodal accelerations
+    std::vector<MaterialPoint> probes_, loads_;
+    std::vector<Vec3> load_point_, load_force_; // per load: last application point and force
 };
-
-/// a block of the engine from its scene definition (rigid model)
-Block make_rigid_block(const BlockDef& def, const Material& mat, double grid_spacing);
 
 }  // namespace cairn::dem

@@ -104,8 +104,9 @@ struct ProbeDef {
 /// Time stepping and output.
 struct RunControl {
     double duration = 1.0;            ///< simulated time, s
-    std::optional<double> dt;         ///< time step, s; empty = auto (dt_safety × critical step)
-    double dt_safety = 0.1;           ///< fraction of the critical step taken by dt = auto
+    std::optional<double> dt;         ///< time step, s; empty = auto (see the safety factors)
+    double dt_safety = 0.1;           ///< dt = auto: fraction of the contact springs' critical step
+    double element_dt_safety = 0.8;   ///< dt = auto: fraction of the elements' critical step (deformable)
     double output_interval = 1e-3;    ///< time between trajectory rows, s (rounded to whole steps)
     int contact_interval = 10;        ///< steps between contact-pair refreshes (n)
     std::optional<double> contact_margin;  ///< broad-phase margin, m; empty = auto

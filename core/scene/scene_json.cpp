@@ -58,6 +58,7 @@ nlohmann::json scene_to_json(const Scene& scene) {
     json run = {{"duration", r.duration},
                 {"dt", r.dt ? json(*r.dt) : json("auto")},
                 {"dt_safety", r.dt_safety},
+                {"element_dt_safety", r.element_dt_safety},
                 {"output_interval", r.output_interval},
                 {"contact_interval", r.contact_interval},
                 {"contact_margin", r.contact_margin ? json(*r.contact_margin) : json("auto")}};

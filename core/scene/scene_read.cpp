@@ -46,8 +46,8 @@ double non_negative(const Item& it) {
 }
 
 RunControl read_run(const TableReader& root) {
-    TableReader r = sub_table(root, "run", {"duration", "dt", "dt_safety", "output_interval",
-                                            "contact_interval", "contact_margin"});
+    TableReader r = sub_table(root, "run", {"duration", "dt", "dt_safety", "element_dt_safety",
+                                            "output_interval", "contact_interval", "contact_margin"});
     RunControl rc;
     rc.duration = positive(r.require("duration"));
     if (Item it = r.get("dt")) {
@@ -57,6 +57,10 @@ RunControl read_run(const TableReader& root) {
     if (Item it = r.get("dt_safety")) {
         rc.dt_safety = it.number();
         it.check(rc.dt_safety > 0.0 && rc.dt_safety <= 1.0, "must be in (0, 1]");
+    }
+    if (Item it = r.get("element_dt_safety")) {
+        rc.element_dt_safety = it.number();
+        it.check(rc.element_dt_safety > 0.0 && rc.element_dt_safety <= 1.0, "must be in (0, 1]");
     }
     if (Item it = r.get("output_interval")) rc.output_interval = positive(it);
     if (Item it = r.get("contact_interval")) {

@@ -1,0 +1,75 @@
+#pragma once
+/// A deformable block: hex8 elements (St. Venant–Kirchhoff, total Lagrangian, 2x2x2 Gauss),
+/// a mass scheme, strain-rate damping β, and nodal accelerations for the explicit step.
+
+#include <Eigen/SparseCholesky>
+#include <vector>
+
+#include "dem/deformable/hex8.hpp"
+#include "dem/mesh.hpp"
+#include "scene/scene.hpp"
+
+namespace cairn::dem {
+
+/// Mass scheme data and the elements of one deformable block.
+class DeformableBody {
+public:
+    /// build from the block's mesh, material, mass scheme, β (s) and fixed nodes
+    DeformableBody(const Mesh& mesh, const Material& material, MassScheme scheme, double beta,
+                   const std::vector<char>& fixed_node);
+
+    /// subtract internal (and β-damping) forces from f for positions x and velocities v;
+    /// returns the strain energy (J) and sets damping_power() (W)
+    double add_internal_forces(const std::vector<Vec3>& x, const std::vector<Vec3>& v, std::vector<Vec3>& f);
+    /// nodal accelerations a = M⁻¹ f (fixed nodes get zero)
+    void accelerations(const std::vector<Vec3>& x, const std::vector<Vec3>& f, std::vector<Vec3>& a);
+    /// kinetic energy ½ vᵀ M v, J
+    double kinetic_energy(const std::vector<Vec3>& x, const std::vector<Vec3>& v) const;
+    /// best-fit rigid pose: centre of mass (m) and rotation block frame → world (polar decomposition)
+    void pose(const std::vector<Vec3>& x, Vec3& centre, Mat3& rotation) const;
+    /// centre-of-mass velocity (m/s) and angular velocity (rad/s) of the nodes
+    void motion(const std::vector<Vec3>& x, const std::vector<Vec3>& v, Vec3& velocity, Vec3& omega) const;
+    /// rotational inertia of the assembled mass about the centre of mass, block axes, kg·m²
+    Mat3 inertia() const;
+
+    double mass() const { return mass_; }
+    const std::vector<double>& lumped_mass() const { return lumped_; }
+    double damping_power() const { return damping_power_; }
+    /// largest element frequency ω_max (rad/s) of the stiffness against this mass scheme
+    double max_element_omega() const { return omega_max_; }
+    /// the strain-rate damping coefficient β, s
+    double beta() const { return beta_; }
+    /// node velocities held at zero
+    const std::vector<char>& fixed_nodes() const { return fixed_; }
+    /// elements processed per call of add_internal_forces
+    size_t element_count() const { return elements_.size(); }
+
+private:
+    Mat3 lumped_inertia_world(const std::vector<Vec3>& x, Vec3& centre) const;
+
+    MassScheme scheme_;
+    Lame lame_;
+    double beta_ = 0.0;
+    double mass_ = 0.0;
+    double omega_max_ = 0.0;
+    double damping_power_ = 0.0;
+    std::vector<Vec3> ref_;                          // reference node positions, block frame
+    Vec3 ref_centre_ = Vec3::Zero();                 // centre of mass, block frame
+    std::vector<std::array<int, 8>> elements_;
+    std::vector<Hex8Reference> refs_;
+    std::vector<double> lumped_;                     // row-sum node masses, kg
+    std::vector<char> fixed_;
+    std::vector<Mat83> element_forces_;              // per element, gathered per node
+    std::vector<double> element_energy_, element_power_;
+    std::vector<int> incidence_start_, incidence_;   // node → (element·8 + local) in CSR
+    // consistent mass, on the free nodes
+    std::vector<int> free_index_;
+    Eigen::SimplicialLLT<Eigen::SparseMatrix<double>> consistent_;
+    Eigen::SparseMatrix<double> consistent_matrix_;
+    // barycentre / corrected: target rotational inertia of the rigid part, block axes
+    Mat3 exact_inertia_ = Mat3::Zero();              // of the consistent mass = the exact one
+    bool rotation_correction_ = false;
+    Mat3 target_inertia_ = Mat3::Zero();
+};
+
+}  // namespace cairn::dem
