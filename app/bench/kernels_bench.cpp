@@ -1,0 +1,83 @@
+// Google Benchmark of the in-house engine's kernels: hex8 internal forces and a whole step,
+// in element updates per second, for meshes of 1 to 32³ elements on 1 and 2 threads.
+#include <benchmark/benchmark.h>
+
+#include <cmath>
+#include <memory>
+
+#ifdef _OPENMP
+#include <omp.h>
+#endif
+
+#include "dem/dem_backend.hpp"
+#include "dem/deformable/deformable_body.hpp"
+#include "dem/mesh.hpp"
+#include "geometry/hexahedron.hpp"
+
+using namespace cairn;
+
+namespace {
+
+void set_threads(int n) {
+#ifdef _OPENMP
+    omp_set_num_threads(n);
+#else
+    (void)n;
+#endif
+}
+
+// internal forces of an n³ mesh of a 1 m cube with a small smooth deformation
+void internal_force(benchmark::State& state) {
+    const int n = int(state.range(0));
+    set_threads(int(state.range(1)));
+    dem::Mesh mesh = dem::make_mesh(box_corners(Vec3(1, 1, 1)), {n, n, n});
+    dem::DeformableBody body(mesh, Material{"stone", 2600, 30e9, 0.2}, MassScheme::lumped, 0.0,
+                             std::vector<char>(mesh.nodes.size(), 0));
+    std::vector<Vec3> x = mesh.nodes, v(x.size(), Vec3::Zero()), f(x.size());
+    for (auto& p : x) p += 1e-4 * Vec3(std::sin(3 * p.y()), std::cos(2 * p.z()), std::sin(p.x()));
+    for (auto _ : state) {
+        std::fill(f.begin(), f.end(), Vec3::Zero());
+        benchmark::DoNotOptimize(body.add_internal_forces(x, v, f));
+    }
+    state.SetItemsProcessed(state.iterations() * int64_t(body.element_count()));
+    state.counters["elements"] = double(body.element_count());
+}
+
+// whole steps of an n³ deformable cube resting on a fixed rigid cube (contact included)
+void whole_step(benchmark::State& state) {
+    const int n = int(state.range(0));
+    set_threads(int(state.range(1)));
+    Scene s;
+    s.name = "bench";
+    s.materials.push_back({"stone", 2600, 30e9, 0.2});
+    s.contact.kn = s.contact.ks = 3e7;
+    s.contact.friction = 0.6;
+    s.run.duration = 1.0;
+    for (int i = 0; i < 2; ++i) {
+        BlockDef b;
+        b.name = i == 0 ? "A" : "B";
+        b.size = Vec3(1, 1, 1);
+        b.corners = box_corners(b.size);
+        b.position = Vec3(0, 0, i == 0 ? 0.5 : -0.5);
+        b.fixed = i == 1;
+        b.model = i == 0 ? BlockModel::deformable : BlockModel::rigid;
+        b.mesh.divisions = {n, n, n};
+        s.blocks.push_back(b);
+    }
+    auto backend = dem_backend_info().make();
+    backend->build(s, RunOptions{});
+    for (auto _ : state) benchmark::DoNotOptimize(backend->step());
+    state.SetItemsProcessed(state.iterations() * int64_t(n) * n * n);
+}
+
+void meshes(benchmark::internal::Benchmark* b) {
+    for (int threads : {1, 2})
+        for (int n : {1, 2, 4, 8, 16, 32}) b->Args({n, threads});
+    b->ArgNames({"n", "threads"})->UseRealTime();
+}
+
+}  // namespace
+
+BENCHMARK(internal_force)->Apply(meshes);
+BENCHMARK(whole_step)->Apply(meshes);
+BENCHMARK_MAIN();
