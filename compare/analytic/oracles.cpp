@@ -78,3 +78,110 @@ double HousnerBlock::amplitude_after(double theta0, int n) const {
 }
 
 }  // namespace cairn::oracle
+
+namespace cairn::oracle {
+
+double dashpot_for_ratio(double zeta, double stiffness, double mass) {
+    return 2.0 * zeta * std::sqrt(stiffness * mass);
+}
+
+namespace {
+
+/// one RK4 step of ẍ = f(x, ẋ)
+template <class F>
+void rk4(double& x, double& v, double h, const F& f) {
+    double k1x = v, k1v = f(x, v);
+    double k2x = v + 0.5 * h * k1v, k2v = f(x + 0.5 * h * k1x, v + 0.5 * h * k1v);
+    double k3x = v + 0.5 * h * k2v, k3v = f(x + 0.5 * h * k2x, v + 0.5 * h * k2v);
+    double k4x = v + h * k3v, k4v = f(x + h * k3x, v + h * k3v);
+    x += h / 6.0 * (k1x + 2.0 * k2x + 2.0 * k3x + k4x);
+    v += h / 6.0 * (k1v + 2.0 * k2v + 2.0 * k3v + k4v);
+}
+
+}  // namespace
+
+DampedDrop::Bounce DampedDrop::first_bounce() const {
+    // x: height of the bottom above the plane; inside the contact the force never pulls
+    auto acc = [&](double x, double v) {
+        double f = x < 0.0 ? std::max(0.0, -stiffness * x - damping * v) : 0.0;
+        return f / mass - g;
+    };
+    const double v0 = std::sqrt(2.0 * g * gap);
+    const double h = 2.0 * M_PI * std::sqrt(mass / stiffness) / 2e5;
+    Bounce b;
+    double x = 0.0, v = -v0, t = 0.0;
+    for (long i = 0; i < 100000000L; ++i) {
+        double xp = x, vp = v;
+        rk4(x, v, h, acc);
+        t += h;
+        b.max_penetration = std::max(b.max_penetration, -x);
+        if (x >= 0.0 && v > 0.0) {
+            // back at the plane: interpolate the crossing within the step
+            double f = xp / (xp - x);
+            b.contact_time = t - h + f * h;
+            b.exit_speed = vp + f * (v - vp);
+            break;
+        }
+    }
+    b.restitution = v0 > 0.0 ? b.exit_speed / v0 : 0.0;
+    return b;
+}
+
+double DampedDrop::bounce_period() const {
+    Bounce b = first_bounce();
+    return b.contact_time + 2.0 * b.exit_speed / g;
+}
+
+std::vector<double> DampedDrop::heights(const std::vector<double>& times) const {
+    auto acc = [&](double x, double v) {
+        double f = x < 0.0 ? std::max(0.0, -stiffness * x - damping * v) : 0.0;
+        return f / mass - g;
+    };
+    const double h = 2.0 * M_PI * std::sqrt(mass / stiffness) / 2e4;
+    std::vector<double> out;
+    out.reserve(times.size());
+    double x = gap, v = 0.0, t = 0.0;
+    for (double target : times) {
+        while (t + h <= target) {
+            rk4(x, v, h, acc);
+            t += h;
+        }
+        double xs = x, vs = v;
+        if (target > t) rk4(xs, vs, target - t, acc);
+        out.push_back(xs);
+    }
+    return out;
+}
+
+double HousnerBlock::amplitude_after(double theta0, int n, double r) const {
+    const double a = alpha(), e = std::pow(r, 2 * n);
+    double c = std::cos(a) + e * (std::cos(a - theta0) - std::cos(a));
+    return a - std::acos(std::min(1.0, c));
+}
+
+std::vector<double> HousnerBlock::angles(double theta0, double r, const std::vector<double>& times) const {
+    const double a = alpha(), p2 = p() * p();
+    auto acc = [&](double th, double) { return -p2 * std::sin(a * (th >= 0.0 ? 1.0 : -1.0) - th); };
+    const double h = 1e-5;
+    std::vector<double> out;
+    out.reserve(times.size());
+    double th = theta0, w = 0.0, t = 0.0;
+    auto advance = [&](double& x, double& v, double step) {
+        double xp = x;
+        rk4(x, v, step, acc);
+        // an impact when θ changes sign: velocity ratio r (the small overshoot is kept)
+        if ((xp > 0.0 && x <= 0.0) || (xp < 0.0 && x >= 0.0)) v *= r;
+    };
+    for (double target : times) {
+        while (t + h <= target) {
+            advance(th, w, h);
+            t += h;
+        }
+        double xs = th, vs = w;
+        if (target > t) advance(xs, vs, target - t);
+        out.push_back(xs);
+    }
+    return out;
+}
+
+}  // namespace cairn::oracle

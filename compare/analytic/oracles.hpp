@@ -1,6 +1,8 @@
 #pragma once
 /// Analytic references of the validation cases (../shared/reference/physics.md), SI units.
 
+#include <vector>
+
 namespace cairn::oracle {
 
 /// a block of mass m (kg) resting on a penalty spring K = kn·A (N/m) under gravity g (m/s²)
@@ -29,6 +31,31 @@ struct DroppedBlock {
     double bounce_period() const;
 };
 
+/// dashpot of damping ratio ζ on a spring K (N/m) and a mass m (kg): 2ζ√(K m), N·s/m
+double dashpot_for_ratio(double zeta, double stiffness, double mass);
+
+/// The block of DroppedBlock on a spring K with a dashpot c whose force max(0, −K x − c ẋ) never
+/// pulls: the contact releases when spring + dashpot reach zero (the "gravity + release" rule of
+/// physics.md). No closed form: the contact phase is integrated with RK4 at T/2e5 steps.
+struct DampedDrop {
+    double mass, stiffness, damping, g, gap;   ///< kg, N/m, N·s/m, m/s², m
+
+    /// what one contact phase does to a block arriving at v0 = √(2 g gap)
+    struct Bounce {
+        double contact_time = 0.0;      ///< from touching to leaving the contact plane, s
+        double max_penetration = 0.0;   ///< m
+        double exit_speed = 0.0;        ///< upward speed when the bottom leaves the plane, m/s
+        double restitution = 0.0;       ///< exit_speed / v0
+    };
+    /// the first contact phase
+    Bounce first_bounce() const;
+    /// time from the first touch to the second touch: contact time + 2 e v0 / g, s
+    double bounce_period() const;
+    /// height of the bottom above the contact plane at each time (ascending, from release at
+    /// rest at t = 0), negative inside the contact, m
+    std::vector<double> heights(const std::vector<double>& times) const;
+};
+
 /// acceleration of a block pulled by H (N) on a flat base with friction μ; 0 if it holds, m/s²
 double pulled_block_acceleration(double mass, double g, double pull, double mu);
 
@@ -54,6 +81,11 @@ struct HousnerBlock {
     double velocity_ratio() const;
     /// amplitude after n impacts (rad) from release at θ0
     double amplitude_after(double theta0, int n) const;
+    /// amplitude after n impacts with an impact angular-velocity ratio r (rad)
+    double amplitude_after(double theta0, int n, double r) const;
+    /// θ(t) (rad) at each time (ascending) from release at rest at θ0, integrating
+    /// θ̈ = −p² sin(α sgnθ − θ) and scaling θ̇ by r at every impact (θ = 0)
+    std::vector<double> angles(double theta0, double r, const std::vector<double>& times) const;
 };
 
 }  // namespace cairn::oracle

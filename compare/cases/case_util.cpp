@@ -1,0 +1,90 @@
+#include "cases/case_util.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "geometry/hexahedron.hpp"
+
+namespace cairn::cases {
+
+double block_mass(const Scene& scene, int b) {
+    const BlockDef& d = scene.blocks.at(b);
+    return mass_properties(d.corners, scene.materials.at(d.material).density).mass;
+}
+
+double bottom_area(const Scene& scene, int b) {
+    const auto& c = scene.blocks.at(b).corners;
+    Vec3 n = (c[2] - c[0]).cross(c[3] - c[1]);
+    return 0.5 * n.norm();
+}
+
+double contact_area(const Scene& scene) {
+    int a = scene.reference ? scene.reference->block : 0;
+    double area = bottom_area(scene, a);
+    for (size_t i = 0; i < scene.blocks.size(); ++i)
+        if (scene.blocks[i].fixed) return std::min(area, bottom_area(scene, int(i)));
+    return area;
+}
+
+double gravity(const Scene& scene) { return scene.gravity.norm(); }
+
+int free_index(const Scene& scene, int block) {
+    int k = 0;
+    for (int i = 0; i < block; ++i)
+        if (!scene.blocks[i].fixed) ++k;
+    return k;
+}
+
+int probe_index(const Scene& scene, const std::string& name) {
+    for (size_t i = 0; i < scene.probes.size(); ++i)
+        if (scene.probes[i].name == name) return int(i);
+    return -1;
+}
+
+double dashpot(const Scene& scene, double stiffness, double mass) {
+    switch (scene.contact.damping_rule) {
+        case ContactDampingRule::ratio: return 2.0 * scene.contact.damping * std::sqrt(stiffness * mass);
+        case ContactDampingRule::time: return scene.contact.damping * stiffness;
+        case ContactDampingRule::none: return 0.0;
+    }
+    return 0.0;
+}
+
+std::vector<double> times(const std::vector<Sample>& s) {
+    std::vector<double> t;
+    t.reserve(s.size());
+    for (const auto& x : s) t.push_back(x.t);
+    return t;
+}
+
+metrics::Series probe_series(const std::vector<Sample>& s, int p, int c, bool relative) {
+    metrics::Series out{times(s), {}};
+    for (const auto& x : s) out.y.push_back(x.probes.at(p)[c] - (relative ? s.front().probes.at(p)[c] : 0.0));
+    return out;
+}
+
+metrics::Series com_series(const std::vector<Sample>& s, int f, int c, bool relative) {
+    metrics::Series out{times(s), {}};
+    for (const auto& x : s)
+        out.y.push_back(x.blocks.at(f).position[c] - (relative ? s.front().blocks.at(f).position[c] : 0.0));
+    return out;
+}
+
+metrics::Series angle_series(const std::vector<Sample>& s, int f, const Vec3& axis) {
+    metrics::Series out{times(s), {}};
+    double prev = 0.0, offset = 0.0;
+    for (size_t i = 0; i < s.size(); ++i) {
+        const Quat& q = s[i].blocks.at(f).orientation;
+        // twist of q about the axis: 2 atan2(q_v·axis, q_w)
+        double a = 2.0 * std::atan2(Vec3(q.x(), q.y(), q.z()).dot(axis), q.w());
+        if (i > 0) {
+            while (a + offset - prev > M_PI) offset -= 2.0 * M_PI;
+            while (a + offset - prev < -M_PI) offset += 2.0 * M_PI;
+        }
+        prev = a + offset;
+        out.y.push_back(prev);
+    }
+    return out;
+}
+
+}  // namespace cairn::cases

@@ -1,0 +1,38 @@
+#pragma once
+/// Helpers shared by the case analyses: block mass, contact face area, signals from samples.
+
+#include <string>
+#include <vector>
+
+#include "backend/backend.hpp"
+#include "metrics/signal.hpp"
+
+namespace cairn::cases {
+
+/// mass of block `b` of the scene, kg
+double block_mass(const Scene& scene, int b);
+/// area of the bottom face (corners 0-3) of block `b`, m²
+double bottom_area(const Scene& scene, int b);
+/// the smaller bottom-face area of the reference block and the first fixed block, m² (the face-on-
+/// face contact area of the paper's stacked cases)
+double contact_area(const Scene& scene);
+/// |gravity|, m/s²
+double gravity(const Scene& scene);
+/// index of the reference block among the free blocks (Sample::blocks order)
+int free_index(const Scene& scene, int block);
+/// index of probe `name`, or -1
+int probe_index(const Scene& scene, const std::string& name);
+/// contact dashpot of the scene's damping rule for a spring K on mass m (ratio: 2ζ√(Km); time: γK), N·s/m
+double dashpot(const Scene& scene, double stiffness, double mass);
+
+/// component c (0 x, 1 y, 2 z) of probe p, minus its value at t = 0 when `relative`
+metrics::Series probe_series(const std::vector<Sample>& s, int p, int c, bool relative);
+/// component c of the centre of mass of free block f, minus its value at t = 0 when `relative`
+metrics::Series com_series(const std::vector<Sample>& s, int f, int c, bool relative);
+/// signed rotation angle (rad) of free block f about the unit world axis, from its orientation,
+/// unwrapped to be continuous in time
+metrics::Series angle_series(const std::vector<Sample>& s, int f, const Vec3& axis);
+/// the sample times
+std::vector<double> times(const std::vector<Sample>& s);
+
+}  // namespace cairn::cases

@@ -1,0 +1,56 @@
+#pragma once
+/// One checked number of a validation case: value, analytic reference, stated tolerance, verdict.
+
+#include <string>
+
+namespace cairn::metrics {
+
+/// How a metric is judged.
+enum class Check {
+    relative,   ///< |value − reference| ≤ tolerance·|reference|
+    absolute,   ///< |value − reference| ≤ tolerance (in the metric's unit)
+    at_most,    ///< value ≤ reference + tolerance (a bound)
+    at_least,   ///< value ≥ reference
+    info,       ///< reported, not judged (no analytic reference holds)
+};
+
+/// A measured number against its reference.
+struct Metric {
+    std::string name;              ///< e.g. "equilibrium penetration"
+    std::string unit;              ///< e.g. "m", "s", "rad", "" (dimensionless)
+    double value = 0.0;            ///< measured, in `unit`
+    double reference = 0.0;       ///< analytic value, in `unit` (ignored for info without one)
+    bool has_reference = true;     ///< false: nothing to compare with
+    double tolerance = 0.0;        ///< relative fraction (relative) or in `unit` (absolute, at_most)
+    Check check = Check::info;
+    std::string basis;             ///< the oracle and why the tolerance is that wide
+    bool measured = true;          ///< false: the event did not happen (value meaningless) → miss
+
+    /// (value − reference)/|reference|; 0 when there is no reference or it is 0
+    double relative_error() const;
+    /// true when the check holds (info metrics always pass)
+    bool pass() const;
+    /// "pass", "MISS" or "info"
+    const char* verdict() const;
+    /// the tolerance as text: "1 %", "≤ 2e-02 m", "≥ 1", "-"
+    std::string tolerance_text() const;
+};
+
+/// a metric checked relative to its reference
+Metric relative(std::string name, std::string unit, double value, double reference, double tol,
+                std::string basis);
+/// a metric checked against an absolute tolerance
+Metric absolute(std::string name, std::string unit, double value, double reference, double tol,
+                std::string basis);
+/// an upper bound: value ≤ bound + tol
+Metric at_most(std::string name, std::string unit, double value, double bound, double tol,
+               std::string basis);
+/// a lower bound: value ≥ bound
+Metric at_least(std::string name, std::string unit, double value, double bound, std::string basis);
+/// a reported number without a check; `reference` optional (NaN = none)
+Metric info(std::string name, std::string unit, double value, double reference, std::string basis);
+/// a metric whose event never happened in the run (e.g. no impact): a miss with a note
+Metric missing(std::string name, std::string unit, double reference, double tol, Check check,
+               std::string basis);
+
+}  // namespace cairn::metrics

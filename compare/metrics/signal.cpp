@@ -1,0 +1,138 @@
+#include "metrics/signal.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include <Eigen/Dense>
+
+namespace cairn::metrics {
+
+std::vector<double> crossings(const Series& s, double level, Crossing dir, double t_from) {
+    std::vector<double> out;
+    for (size_t i = 1; i < s.t.size(); ++i) {
+        if (s.t[i] < t_from) continue;
+        double a = s.y[i - 1] - level, b = s.y[i] - level;
+        bool up = a < 0.0 && b >= 0.0, down = a > 0.0 && b <= 0.0;
+        if ((dir == Crossing::up && !up) || (dir == Crossing::down && !down) || (!up && !down))
+            continue;
+        double f = a / (a - b);
+        double t = s.t[i - 1] + f * (s.t[i] - s.t[i - 1]);
+        if (t >= t_from) out.push_back(t);
+    }
+    return out;
+}
+
+std::vector<Extremum> extrema(const Series& s, bool maxima, double prominence) {
+    std::vector<Extremum> out;
+    const double sign = maxima ? 1.0 : -1.0;
+    const size_t n = s.y.size();
+    double valley = n ? sign * s.y[0] : 0.0;   // lowest (signed) value since the last extremum
+    for (size_t i = 1; i + 1 < n; ++i) {
+        double y0 = sign * s.y[i - 1], y1 = sign * s.y[i], y2 = sign * s.y[i + 1];
+        valley = std::min(valley, y1);
+        if (!(y1 > y0 && y1 >= y2)) continue;
+        if (y1 - valley < prominence) continue;
+        // vertex of the parabola through the three samples (uniform or not)
+        double t0 = s.t[i - 1], t1 = s.t[i], t2 = s.t[i + 1];
+        double d1 = (y1 - y0) / (t1 - t0), d2 = (y2 - y1) / (t2 - t1);
+        double c2 = (d2 - d1) / (t2 - t0);
+        Extremum e{t1, sign * y1};
+        if (c2 < 0.0) {
+            double c1 = d1 - c2 * (t0 + t1);
+            double tv = -c1 / (2.0 * c2);
+            if (tv > t0 && tv < t2) {
+                e.t = tv;
+                e.y = sign * (y1 + d1 * (tv - t1) + c2 * (tv - t0) * (tv - t1));
+            }
+        }
+        out.push_back(e);
+        valley = y1;
+    }
+    return out;
+}
+
+std::vector<double> polyfit(const Series& s, int degree, double t0, double t1) {
+    std::vector<size_t> rows;
+    for (size_t i = 0; i < s.t.size(); ++i)
+        if (s.t[i] >= t0 && s.t[i] <= t1) rows.push_back(i);
+    const int m = degree + 1;
+    if (int(rows.size()) < m) return std::vector<double>(m, 0.0);
+    // centre and scale the times for a well-conditioned fit
+    double tc = 0.5 * (s.t[rows.front()] + s.t[rows.back()]);
+    double ts = std::max(1e-300, 0.5 * (s.t[rows.back()] - s.t[rows.front()]));
+    Eigen::MatrixXd a(rows.size(), m);
+    Eigen::VectorXd b(rows.size());
+    for (size_t r = 0; r < rows.size(); ++r) {
+        double u = (s.t[rows[r]] - tc) / ts, p = 1.0;
+        for (int k = 0; k < m; ++k, p *= u) a(r, k) = p;
+        b(r) = s.y[rows[r]];
+    }
+    Eigen::VectorXd cu = a.colPivHouseholderQr().solve(b);
+    // back to powers of t: Σ cu_k ((t − tc)/ts)^k
+    std::vector<double> c(m, 0.0);
+    for (int k = 0; k < m; ++k) {
+        // expand ((t − tc)/ts)^k with the binomial theorem
+        double binom = 1.0;
+        for (int j = 0; j <= k; ++j) {
+            c[j] += cu(k) * binom * std::pow(-tc, k - j) / std::pow(ts, k);
+            binom = binom * (k - j) / (j + 1);
+        }
+    }
+    return c;
+}
+
+double interpolate(const Series& s, double t) {
+    if (s.t.empty()) return 0.0;
+    if (t <= s.t.front()) return s.y.front();
+    if (t >= s.t.back()) return s.y.back();
+    size_t i = std::upper_bound(s.t.begin(), s.t.end(), t) - s.t.begin();
+    double f = (t - s.t[i - 1]) / (s.t[i] - s.t[i - 1]);
+    return s.y[i - 1] + f * (s.y[i] - s.y[i - 1]);
+}
+
+double period_from_crossings(const Series& s, double level) {
+    auto c = crossings(s, level, Crossing::up);
+    if (c.size() < 2) return 0.0;
+    return (c.back() - c.front()) / double(c.size() - 1);
+}
+
+double max_value(const Series& s, double t0, double t1) {
+    double m = -1e300;
+    for (size_t i = 0; i < s.t.size(); ++i)
+        if (s.t[i] >= t0 && s.t[i] <= t1) m = std::max(m, s.y[i]);
+    return m;
+}
+
+double min_value(const Series& s, double t0, double t1) {
+    double m = 1e300;
+    for (size_t i = 0; i < s.t.size(); ++i)
+        if (s.t[i] >= t0 && s.t[i] <= t1) m = std::min(m, s.y[i]);
+    return m;
+}
+
+double mean_value(const Series& s, double t0, double t1) {
+    double area = 0.0, span = 0.0;
+    for (size_t i = 1; i < s.t.size(); ++i) {
+        double a = std::max(t0, s.t[i - 1]), b = std::min(t1, s.t[i]);
+        if (b <= a) continue;
+        area += 0.5 * (interpolate(s, a) + interpolate(s, b)) * (b - a);
+        span += b - a;
+    }
+    return span > 0.0 ? area / span : 0.0;
+}
+
+double rms_difference(const Series& a, const Series& b, double shift) {
+    if (a.t.empty() || b.t.empty()) return 0.0;
+    double sum = 0.0;
+    long n = 0;
+    for (size_t i = 0; i < b.t.size(); ++i) {
+        double ta = b.t[i] + shift;
+        if (ta < a.t.front() || ta > a.t.back()) continue;
+        double d = interpolate(a, ta) - b.y[i];
+        sum += d * d;
+        ++n;
+    }
+    return n ? std::sqrt(sum / n) : 0.0;
+}
+
+}  // namespace cairn::metrics

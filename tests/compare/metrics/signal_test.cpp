@@ -1,0 +1,70 @@
+// signal tools on synthetic signals with known answers
+#include <catch2/catch.hpp>
+
+#include <cmath>
+
+#include "metrics/signal.hpp"
+
+using namespace cairn::metrics;
+
+namespace {
+Series sample(double t0, double t1, double dt, double (*f)(double)) {
+    Series s;
+    for (double t = t0; t <= t1 + 1e-12; t += dt) { s.t.push_back(t); s.y.push_back(f(t)); }
+    return s;
+}
+constexpr double kPeriod = 0.058493;   // stability period of physics.md
+double swing(double t) { return 8.502e-4 * (1.0 - std::cos(2.0 * M_PI * t / kPeriod)); }
+double parabola(double t) { return 0.3 + 0.2 * t + 0.5 * 0.981 * t * t; }
+}  // namespace
+
+TEST_CASE("the period of a sampled cosine comes from its crossings", "[metrics]") {
+    // 1.1 ms samples (dem's step on the stability scene): linear interpolation of a crossing of a
+    // sine is exact to O(dt³) per crossing; the period averages them
+    Series s = sample(0.0, 0.5, 1.1e-3, swing);
+    CHECK(period_from_crossings(s, 8.502e-4) == Approx(kPeriod).epsilon(1e-4));
+    auto c = crossings(s, 8.502e-4, Crossing::up);
+    REQUIRE(c.size() >= 2);
+    CHECK(c[0] == Approx(0.25 * kPeriod).epsilon(1e-4));
+    CHECK(crossings(s, 8.502e-4, Crossing::down)[0] == Approx(0.75 * kPeriod).epsilon(1e-4));
+}
+
+TEST_CASE("extrema are refined by the parabola through three samples", "[metrics]") {
+    Series s = sample(0.0, 0.2, 1.1e-3, swing);
+    auto peaks = extrema(s, true, 1e-4);
+    REQUIRE(peaks.size() == 3);   // peaks at T/2, 3T/2, 5T/2 < 0.2 s
+    // a cosine near its top is a parabola to O(dt⁴): the vertex is within 1e-5 of the period
+    CHECK(peaks[0].t == Approx(0.5 * kPeriod).margin(1e-5 * kPeriod * 100));
+    CHECK(peaks[0].y == Approx(2.0 * 8.502e-4).epsilon(1e-4));
+    auto valleys = extrema(s, false, 1e-4);
+    REQUIRE(valleys.size() >= 3);
+    CHECK(valleys[0].t == Approx(kPeriod).epsilon(1e-3));
+    CHECK(valleys[0].y == Approx(0.0).margin(1e-9));
+    // a small wiggle below the prominence is no extremum
+    CHECK(extrema(s, true, 1.0).empty());
+}
+
+TEST_CASE("a quadratic fit recovers the acceleration of a parabola", "[metrics]") {
+    Series s = sample(0.0, 1.0, 7.8e-4, parabola);
+    auto c = polyfit(s, 2, 0.1, 1.0);
+    // exact data: only rounding errors remain
+    CHECK(2.0 * c[2] == Approx(0.981).epsilon(1e-9));
+    CHECK(c[1] == Approx(0.2).epsilon(1e-9));
+    CHECK(c[0] == Approx(0.3).epsilon(1e-9));
+}
+
+TEST_CASE("interpolation, means and shifted differences", "[metrics]") {
+    Series s = sample(0.0, 0.5, 1e-3, swing);
+    // linear between 1 ms samples: error ≤ (dt ω)²/8 of the amplitude ≈ 1.4e-3 at most, far less here
+    CHECK(interpolate(s, 0.25 * kPeriod) == Approx(8.502e-4).epsilon(1e-4));
+    // the mean over whole periods is the midline; the trapezoid rule on 58 points per period is
+    // exact for a sine over whole periods up to the end effects of a partial interval
+    CHECK(mean_value(s, 0.0, 5 * kPeriod) == Approx(8.502e-4).epsilon(1e-3));
+    CHECK(max_value(s) <= 2.0 * 8.502e-4);
+    CHECK(min_value(s) >= 0.0);
+    // a copy delayed by 5 ms differs from the original, and not once the shift is taken out
+    Series late = s;
+    for (double& t : late.t) t += 5e-3;
+    CHECK(rms_difference(late, s, 0.0) > 1e-4);
+    CHECK(rms_difference(late, s, 5e-3) == Approx(0.0).margin(1e-12));
+}
