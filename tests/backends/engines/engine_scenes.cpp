@@ -67,6 +67,12 @@ std::vector<std::string> engine_names() {
     return names;
 }
 
+std::vector<std::string> all_backend_names() {
+    std::vector<std::string> names;
+    for (const auto& b : available_backends()) names.push_back(b.name);
+    return names;
+}
+
 double angle_about_y(const Quat& q) {
     Mat3 r = q.toRotationMatrix();
     return std::atan2(r(0, 2), r(2, 2));

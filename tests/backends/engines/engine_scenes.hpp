@@ -25,6 +25,9 @@ Scene rocking_scene(double theta0);
 /// the reference-engine backends built into this binary (every registered name except "dem")
 std::vector<std::string> engine_names();
 
+/// every backend built into this binary, the in-house dem included
+std::vector<std::string> all_backend_names();
+
 /// rotation angle about y of a rotation that is a pure y rotation, rad
 double angle_about_y(const Quat& q);
 
