@@ -117,6 +117,13 @@ ContactTotals ContactSet::apply(std::vector<Block>& blocks, double dt) {
             closer_tol = 0.25 * tb.min_edge;
         }
         const int hit_side = hb.mesh.face_side[c.hit_face];
+        // a face whose side is the hitting side of no target side cannot act: clear its anchors
+        bool acts = false;
+        for (int s = 0; s < 6; ++s) acts |= best_side[s] == hit_side && target_ok[s];
+        if (!acts) {
+            for (auto& a : c.anchors) a.side = -1;
+            continue;
+        }
         const Quad hq = hb.face_quad(c.hit_face);
         const auto& pts = hb.hits[c.hit_face];
         // damping coefficients per unit tributary area, N·s/m³

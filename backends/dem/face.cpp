@@ -19,17 +19,6 @@ void tangents(const Quad& c, const Vec2& xi, Vec3& t1, Vec3& t2) {
 }
 }  // namespace
 
-std::array<double, 4> quad_weights(const Vec2& xi) {
-    std::array<double, 4> w;
-    for (int i = 0; i < 4; ++i) w[i] = 0.25 * (1 + kSign[i][0] * xi[0]) * (1 + kSign[i][1] * xi[1]);
-    return w;
-}
-
-Vec3 quad_point(const Quad& c, const Vec2& xi) {
-    auto w = quad_weights(xi);
-    return w[0] * c[0] + w[1] * c[1] + w[2] * c[2] + w[3] * c[3];
-}
-
 Vec3 quad_normal(const Quad& c, const Vec2& xi) {
     Vec3 t1, t2;
     tangents(c, xi, t1, t2);
@@ -37,17 +26,19 @@ Vec3 quad_normal(const Quad& c, const Vec2& xi) {
 }
 
 Projection project(const Quad& c, const Vec3& p, Vec2 start) {
-    // Gauss-Newton on |x(ξ,η) - p|²: exact in one step for a parallelogram
+    // Gauss-Newton on |x(ξ,η) - p|²: exact in one step for a parallelogram (no twist term)
+    const Vec3 twist = c[0] - c[1] + c[2] - c[3];
+    const bool parallelogram = twist.squaredNorm() <= 1e-24 * (c[2] - c[0]).squaredNorm();
     Vec2 xi = start;
     for (int it = 0; it < 6; ++it) {
         Vec3 t1, t2;
         tangents(c, xi, t1, t2);
-        Vec3 r = quad_point(c, xi) - p;
-        Eigen::Matrix2d jtj;
-        jtj << t1.dot(t1), t1.dot(t2), t1.dot(t2), t2.dot(t2);
-        Vec2 step = -jtj.ldlt().solve(Vec2(t1.dot(r), t2.dot(r)));
+        const Vec3 r = quad_point(c, xi) - p;
+        const double g11 = t1.dot(t1), g12 = t1.dot(t2), g22 = t2.dot(t2), det = g11 * g22 - g12 * g12;
+        const double r1 = t1.dot(r), r2 = t2.dot(r);
+        const Vec2 step((g12 * r2 - g22 * r1) / det, (g12 * r1 - g11 * r2) / det);
         xi += step;
-        if (step.squaredNorm() < 1e-26) break;
+        if (parallelogram || step.squaredNorm() < 1e-26) break;
     }
     Projection pr;
     pr.xi = xi;

@@ -12,10 +12,16 @@ namespace cairn::dem {
 using Quad = std::array<Vec3, 4>;
 
 /// bilinear weights of the 4 corners at (ξ, η)
-std::array<double, 4> quad_weights(const Vec2& xi);
+inline std::array<double, 4> quad_weights(const Vec2& xi) {
+    const double a = 1 - xi[0], b = 1 + xi[0], c = 1 - xi[1], d = 1 + xi[1];
+    return {0.25 * a * c, 0.25 * b * c, 0.25 * b * d, 0.25 * a * d};
+}
 
 /// the point of the face at (ξ, η)
-Vec3 quad_point(const Quad& c, const Vec2& xi);
+inline Vec3 quad_point(const Quad& c, const Vec2& xi) {
+    auto w = quad_weights(xi);
+    return w[0] * c[0] + w[1] * c[1] + w[2] * c[2] + w[3] * c[3];
+}
 
 /// outward unit normal at (ξ, η)
 Vec3 quad_normal(const Quad& c, const Vec2& xi);
