@@ -211,17 +211,14 @@ void BulletBackend::build(const Scene& scene, const RunOptions& options) {
     note(n.str());
     note("friction: mu per contact point along " + std::to_string(directions) +
          " direction(s), each clamped separately (a box, not a cone); no elastic stick before slip");
-    if (scene_.contact.ks > 0) note("shear stiffness ks: ignored (velocity-level friction)");
     if (scene_.damping.alpha > 0) {
         n.str("");
         n << "mass-proportional damping: body damping 1-exp(-alpha) = " << linear_damping
           << " (v *= exp(-alpha*dt) each step, linear and angular)";
         note(n.str());
     }
-    if (scene_.damping.beta > 0) note("stiffness-proportional damping: beta ignored (rigid bodies)");
     note("deactivation: disabled on every body");
-    note("energy: contact energy 1/2 k d^2 per point in matched mode, 0 in rigid mode; dissipated energy "
-         "not computed (reported 0)");
+    for (const auto& line : rigid_engine_notes(scene_)) note(line);
 }
 
 StepStatus BulletBackend::step() {

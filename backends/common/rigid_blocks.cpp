@@ -101,4 +101,13 @@ PointSpring matched_point_spring(const Scene& scene, const RigidBlock& a, const 
     return {k / points, c / points};
 }
 
+std::vector<std::string> rigid_engine_notes(const Scene& scene) {
+    std::vector<std::string> n;
+    if (scene.contact.ks > 0) n.push_back("shear stiffness ks: ignored (velocity-level friction)");
+    if (scene.damping.beta > 0) n.push_back("stiffness-proportional damping: beta ignored (rigid bodies)");
+    n.push_back("energy: contact energy 1/2 k d^2 per contact point in matched mode, 0 in rigid mode; "
+                "dissipated energy not computed (reported 0)");
+    return n;
+}
+
 }  // namespace cairn

@@ -52,4 +52,8 @@ struct PointSpring {
 PointSpring matched_point_spring(const Scene& scene, const RigidBlock& a, const RigidBlock* b,
                                  int points = 4);
 
+/// the notes every velocity-level rigid-body engine adds for a scene: what it ignores (ks, β)
+/// and what its energy columns hold
+std::vector<std::string> rigid_engine_notes(const Scene& scene);
+
 }  // namespace cairn

@@ -226,13 +226,7 @@ void MujocoBackend::build(const Scene& scene, const RunOptions& options) {
         n << "mass-proportional damping: velocities scaled by exp(-alpha*dt) after each step";
         note(n);
     }
-    if (scene_.damping.beta > 0) {
-        n << "stiffness-proportional damping: beta ignored (rigid bodies)";
-        note(n);
-    }
-    n << "energy: contact energy 1/2 k d^2 per contact in matched mode (k = kn*A/4), 0 in rigid mode; "
-         "dissipated energy not computed (reported 0)";
-    note(n);
+    for (const auto& line : rigid_engine_notes(scene_)) notes_.push_back(line);
     for (const RigidBlock& b : blocks_)
         if (!b.is_box) {
             n << "general hexahedra: mesh geoms (convex hull); MuJoCo 2.2.2 gives one contact per mesh pair";

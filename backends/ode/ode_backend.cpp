@@ -203,21 +203,13 @@ void OdeBackend::build(const Scene& scene, const RunOptions& options) {
     n << "friction: dContactApprox1, mu " << scene_.contact.friction
       << " per contact in two directions (pyramid); no elastic stick before slip";
     note(n);
-    if (scene_.contact.ks > 0) {
-        n << "shear stiffness ks: ignored (velocity-level friction)";
-        note(n);
-    }
     if (scene_.damping.alpha > 0) {
         n << "mass-proportional damping: velocities scaled by exp(-alpha*dt) after each step";
         note(n);
     }
-    if (scene_.damping.beta > 0) {
-        n << "stiffness-proportional damping: beta ignored (rigid bodies)";
-        note(n);
-    }
-    n << "auto-disable: off; energy: contact energy 1/2 k d^2 per contact in matched mode, 0 in rigid "
-         "mode; dissipated energy not computed (reported 0)";
+    n << "auto-disable: off";
     note(n);
+    for (const auto& line : rigid_engine_notes(scene_)) notes_.push_back(line);
     for (const auto& b : blocks_)
         if (!b.is_box) {
             n << "general hexahedra: dCreateConvex (" << dGetConfiguration() << ")";
