@@ -45,8 +45,7 @@ DeformableBody::DeformableBody(const Mesh& mesh, const Material& mat, MassScheme
     for (const auto& e : elements_) {
         Corners c;
         for (int a = 0; a < 8; ++a) c[a] = ref_[e[a]];
-        refs_.push_back(hex8_reference(c));
-        const Hex8Reference& r = refs_.back();
+        const Hex8Reference r = hex8_reference(c);
         auto me = hex8_consistent_mass(r, mat.density);
         for (int a = 0; a < 8; ++a) {
             lumped_[e[a]] += me.row(a).sum();
@@ -77,10 +76,11 @@ DeformableBody::DeformableBody(const Mesh& mesh, const Material& mat, MassScheme
     incidence_.resize(incidence_start_[nn]);
     std::vector<int> fill(incidence_start_.begin(), incidence_start_.end() - 1);
     for (size_t el = 0; el < ne; ++el)
-        for (int a = 0; a < 8; ++a) incidence_[fill[elements_[el][a]]++] = int(el * 8 + a);
-    element_forces_.resize(ne);
-    element_energy_.resize(ne);
-    element_power_.resize(ne);
+        for (int a = 0; a < 8; ++a) incidence_[fill[elements_[el][a]]++] = Hex8Batch::force_index(el, a);
+    batch_ = Hex8Batch(ref_, elements_);
+    element_forces_.assign_zero(batch_.batch_count() * Hex8Batch::kForceStride);
+    batch_energy_.assign(batch_.batch_count(), 0.0);
+    batch_power_.assign(batch_.batch_count(), 0.0);
 
     // exact inertia: the consistent mass integrates ρ·r⊗r exactly for trilinear geometry
     for (const auto& t : mc) {
@@ -102,6 +102,8 @@ DeformableBody::DeformableBody(const Mesh& mesh, const Material& mat, MassScheme
         consistent_matrix_.resize(nf, nf);
         consistent_matrix_.setFromTriplets(red.begin(), red.end());
         consistent_.compute(consistent_matrix_);
+        work_rhs_.setZero(nf, 3);
+        work_sol_.setZero(nf, 3);
     } else if ((scheme_ == MassScheme::barycentre || scheme_ == MassScheme::corrected) && !any_fixed) {
         rotation_correction_ = true;
         const Mat3& exact = exact_inertia_;
@@ -118,31 +120,31 @@ DeformableBody::DeformableBody(const Mesh& mesh, const Material& mat, MassScheme
 
 double DeformableBody::add_internal_forces(const std::vector<Vec3>& x, const std::vector<Vec3>& v,
                                            std::vector<Vec3>& f) {
-    const long ne = long(elements_.size());
-#pragma omp parallel for schedule(static) if (ne >= 64)
-    for (long el = 0; el < ne; ++el) {
-        const auto& e = elements_[el];
-        Mat83 xe, ve, fe = Mat83::Zero();
-        for (int a = 0; a < 8; ++a) {
-            xe.row(a) = x[e[a]].transpose();
-            ve.row(a) = v[e[a]].transpose();
+    const long nb = long(batch_.batch_count()), nn = long(x.size());
+    const Vec3* xp = x.data();
+    const Vec3* vp = beta_ > 0.0 ? v.data() : nullptr;
+    double* forces = element_forces_.data();
+    // one parallel region: elements (into their own slots), then a fixed-order gather per node,
+    // so the result does not depend on the thread count. Below ~16 batches a fork costs more
+    // than it saves.
+#pragma omp parallel if (nb >= 16)
+    {
+#pragma omp for schedule(static)
+        for (long b = 0; b < nb; ++b)
+            batch_energy_[b] = batch_.compute(size_t(b), lame_, xp, vp, beta_, forces, batch_power_[b]);
+#pragma omp for schedule(static)
+        for (long n = 0; n < nn; ++n) {
+            double s0 = 0.0, s1 = 0.0, s2 = 0.0;
+            for (int k = incidence_start_[n]; k < incidence_start_[n + 1]; ++k) {
+                const double* p = forces + incidence_[k];
+                s0 += p[0], s1 += p[Hex8Batch::kLanes], s2 += p[2 * Hex8Batch::kLanes];
+            }
+            f[n] -= Vec3(s0, s1, s2);
         }
-        double power = 0.0;
-        element_energy_[el] = hex8_internal_force(refs_[el], lame_, xe, fe, beta_, beta_ > 0 ? &ve : nullptr, &power);
-        element_power_[el] = power;
-        element_forces_[el] = fe;
-    }
-    const long nn = long(x.size());
-#pragma omp parallel for schedule(static) if (nn >= 512)
-    for (long n = 0; n < nn; ++n) {
-        Vec3 sum = Vec3::Zero();
-        for (int k = incidence_start_[n]; k < incidence_start_[n + 1]; ++k)
-            sum += element_forces_[incidence_[k] / 8].row(incidence_[k] % 8).transpose();
-        f[n] -= sum;
     }
     double energy = 0.0;
     damping_power_ = 0.0;
-    for (long el = 0; el < ne; ++el) energy += element_energy_[el], damping_power_ += element_power_[el];
+    for (long b = 0; b < nb; ++b) energy += batch_energy_[b], damping_power_ += batch_power_[b];
     return energy;
 }
 
@@ -158,12 +160,11 @@ Mat3 DeformableBody::lumped_inertia_world(const std::vector<Vec3>& x, Vec3& cent
 void DeformableBody::accelerations(const std::vector<Vec3>& x, const std::vector<Vec3>& f, std::vector<Vec3>& a) {
     const size_t nn = x.size();
     if (scheme_ == MassScheme::consistent) {
-        Eigen::MatrixXd rhs(consistent_matrix_.rows(), 3);
         for (size_t n = 0; n < nn; ++n)
-            if (free_index_[n] >= 0) rhs.row(free_index_[n]) = f[n].transpose();
-        Eigen::MatrixXd sol = consistent_.solve(rhs);
+            if (free_index_[n] >= 0) work_rhs_.row(free_index_[n]) = f[n].transpose();
+        work_sol_ = consistent_.solve(work_rhs_);   // sizes already match: no allocation
         for (size_t n = 0; n < nn; ++n)
-            a[n] = free_index_[n] >= 0 ? Vec3(sol.row(free_index_[n]).transpose()) : Vec3::Zero();
+            a[n] = free_index_[n] >= 0 ? Vec3(work_sol_.row(free_index_[n]).transpose()) : Vec3::Zero();
         return;
     }
     for (size_t n = 0; n < nn; ++n) a[n] = fixed_[n] ? Vec3::Zero() : Vec3(f[n] / lumped_[n]);
@@ -184,11 +185,10 @@ void DeformableBody::accelerations(const std::vector<Vec3>& x, const std::vector
 double DeformableBody::kinetic_energy(const std::vector<Vec3>& x, const std::vector<Vec3>& v) const {
     double e = 0.0;
     if (scheme_ == MassScheme::consistent) {
-        Eigen::MatrixXd vf(consistent_matrix_.rows(), 3);
         for (size_t n = 0; n < v.size(); ++n)
-            if (free_index_[n] >= 0) vf.row(free_index_[n]) = v[n].transpose();
-        Eigen::MatrixXd mv = consistent_matrix_ * vf;
-        return 0.5 * (vf.array() * mv.array()).sum();
+            if (free_index_[n] >= 0) work_rhs_.row(free_index_[n]) = v[n].transpose();
+        work_sol_.noalias() = consistent_matrix_ * work_rhs_;
+        return 0.5 * (work_rhs_.array() * work_sol_.array()).sum();
     }
     for (size_t n = 0; n < v.size(); ++n) e += 0.5 * lumped_[n] * v[n].squaredNorm();
     if (!rotation_correction_) return e;

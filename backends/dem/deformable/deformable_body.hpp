@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "dem/deformable/hex8.hpp"
+#include "dem/deformable/hex8_batch.hpp"
 #include "dem/mesh.hpp"
 #include "scene/scene.hpp"
 
@@ -56,16 +57,18 @@ private:
     std::vector<Vec3> ref_;                          // reference node positions, block frame
     Vec3 ref_centre_ = Vec3::Zero();                 // centre of mass, block frame
     std::vector<std::array<int, 8>> elements_;
-    std::vector<Hex8Reference> refs_;
+    Hex8Batch batch_;                                // elements packed for SIMD
     std::vector<double> lumped_;                     // row-sum node masses, kg
     std::vector<char> fixed_;
-    std::vector<Mat83> element_forces_;              // per element, gathered per node
-    std::vector<double> element_energy_, element_power_;
-    std::vector<int> incidence_start_, incidence_;   // node → (element·8 + local) in CSR
+    AlignedDoubles element_forces_;                  // per element (batch layout), gathered per node
+    std::vector<double> batch_energy_, batch_power_;
+    std::vector<int> incidence_start_;               // node → its element forces, CSR
+    std::vector<size_t> incidence_;                  // Hex8Batch::force_index of each incidence
     // consistent mass, on the free nodes
     std::vector<int> free_index_;
     Eigen::SimplicialLLT<Eigen::SparseMatrix<double>> consistent_;
     Eigen::SparseMatrix<double> consistent_matrix_;
+    mutable Eigen::MatrixXd work_rhs_, work_sol_;    // free nodes × 3, preallocated for the step
     // barycentre / corrected: target rotational inertia of the rigid part, block axes
     Mat3 exact_inertia_ = Mat3::Zero();              // of the consistent mass = the exact one
     bool rotation_correction_ = false;
