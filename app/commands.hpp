@@ -30,6 +30,31 @@ struct RunAllOptions {
 /// `cairn run-all`: every shipped scene on every backend, then a summary table
 int run_all_command(const RunAllOptions& options);
 
+/// Options of `cairn study inertia`.
+struct StudyInertiaOptions {
+    std::string out_dir = "out/study";   ///< inertia.csv, inertia.md, inertia.html, figures/
+    int repeats = 3;                     ///< runs per point; the wall time is their median
+    int jobs = 2;                        ///< runs at a time
+    std::vector<int> ns;                 ///< elements per side; empty = 1, 2, 4, 8
+    bool quiet = false;                  ///< no progress lines
+};
+
+/// `cairn study inertia`: every mass scheme x mesh on the rocking and impact scenes (docs/inertia.md)
+int study_inertia_command(const StudyInertiaOptions& options);
+
+/// Options of `cairn validate`.
+struct ValidateOptions {
+    std::string out_dir = "out/validation";   ///< summary.csv, report.md, index.html, runs/, figures/
+    std::vector<std::string> backends;        ///< empty = every available backend
+    std::vector<std::string> cases;           ///< empty = every paper case
+    std::vector<std::string> overrides;       ///< "key=value" applied to every run's scene
+    int jobs = 2;                             ///< runs at a time
+    bool quiet = false;                       ///< no progress lines
+};
+
+/// `cairn validate`: the paper's cases on every backend against their analytic references
+int validate_command(const ValidateOptions& options);
+
 /// true when stderr is a terminal (progress lines make sense)
 bool stderr_is_terminal();
 

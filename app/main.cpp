@@ -38,6 +38,28 @@ int main(int argc, char** argv) {
         ->delimiter(',');
     run_all->add_flag("--quiet,-q", all.quiet, "no progress lines");
 
+    StudyInertiaOptions inertia;
+    auto* study = app.add_subcommand("study", "studies of the engine's numerical choices");
+    study->require_subcommand(1);
+    auto* study_inertia = study->add_subcommand("inertia", "mesh-inertia study: mass schemes x mesh on rocking and impact");
+    study_inertia->add_option("--out,-o", inertia.out_dir, "output directory (default out/study)");
+    study_inertia->add_option("--repeats", inertia.repeats, "runs per point; wall time is their median (default 3)")
+        ->check(CLI::Range(1, 9));
+    study_inertia->add_option("--jobs,-j", inertia.jobs, "runs at a time (default 2)")->check(CLI::Range(1, 64));
+    study_inertia->add_option("--n", inertia.ns, "elements per side (default 1,2,4,8)")->delimiter(',');
+    study_inertia->add_flag("--quiet,-q", inertia.quiet, "no progress lines");
+
+    ValidateOptions val;
+    auto* validate = app.add_subcommand("validate", "run the paper's cases on every backend and write the report");
+    validate->add_option("--out,-o", val.out_dir, "output directory (default out/validation)");
+    validate->add_option("--backends", val.backends, "comma-separated backend names")->delimiter(',');
+    validate->add_option("--cases", val.cases, "comma-separated case names (default: all)")->delimiter(',');
+    validate->add_option("--set", val.overrides, "override a key of every scene: --set key=value (repeatable)")
+        ->take_all()
+        ->allow_extra_args(false);
+    validate->add_option("--jobs,-j", val.jobs, "runs at a time (default 2)")->check(CLI::Range(1, 64));
+    validate->add_flag("--quiet,-q", val.quiet, "no progress lines");
+
     try {
         app.parse(argc, argv);
     } catch (const CLI::ParseError& e) {
@@ -49,6 +71,8 @@ int main(int argc, char** argv) {
         if (app.got_subcommand(run)) return run_command(job, quiet);
         if (app.got_subcommand("list")) return list_command();
         if (app.got_subcommand(run_all)) return run_all_command(all);
+        if (study_inertia->parsed()) return study_inertia_command(inertia);
+        if (app.got_subcommand(validate)) return validate_command(val);
     } catch (const std::exception& e) {
         std::cerr << "error: " << e.what() << "\n";
         return kExitFailure;

@@ -1,0 +1,117 @@
+// `cairn validate`: every paper case on every backend variant, judged against the analytic
+// references, with summary.csv, report.md, index.html and a verdict on the terminal
+#include <chrono>
+#include <cstdio>
+#include <filesystem>
+#include <iostream>
+
+#include "commands.hpp"
+#include "error.hpp"
+#include "output/atomic_write.hpp"
+#include "registry.hpp"
+#include "report/figures.hpp"
+#include "report/validation_report.hpp"
+#include "scene/scene_io.hpp"
+#include "scenes.hpp"
+#include "validation/plan.hpp"
+#include "validation/run_cases.hpp"
+
+namespace fs = std::filesystem;
+
+namespace cairn {
+
+namespace {
+
+std::string join(const std::vector<std::string>& v, const char* sep) {
+    std::string s;
+    for (size_t i = 0; i < v.size(); ++i) s += (i ? sep : "") + v[i];
+    return s;
+}
+
+/// the command that reproduces this validation
+std::string command_line(const ValidateOptions& o) {
+    std::string c = "cairn validate --out " + o.out_dir;
+    if (!o.backends.empty()) c += " --backends " + join(o.backends, ",");
+    if (!o.cases.empty()) c += " --cases " + join(o.cases, ",");
+    for (const auto& s : o.overrides) c += " --set " + s;
+    if (o.jobs != 2) c += " --jobs " + std::to_string(o.jobs);
+    return c;
+}
+
+}  // namespace
+
+int validate_command(const ValidateOptions& options) {
+    const auto start = std::chrono::steady_clock::now();
+    // every input problem is found before anything runs or is written
+    std::vector<std::string> backends = options.backends;
+    if (backends.empty())
+        for (const auto& b : available_backends()) backends.push_back(b.name);
+    std::vector<std::string> names = options.cases.empty() ? validation::paper_cases() : options.cases;
+    validation::RunPlan plan;
+    plan.out_dir = options.out_dir;
+    plan.overrides = options.overrides;
+    plan.jobs = options.jobs;
+    plan.quiet = options.quiet;
+    plan.serial_backends = {"ode"};   // Debian's ODE keeps its collision data global (no mt_collisions)
+    try {
+        for (const auto& b : backends) make_backend(b);
+        std::vector<Override> overrides;
+        for (const auto& s : options.overrides) overrides.push_back(parse_override(s));
+        for (const auto& n : names) {
+            const std::string path = resolve_scene(n.find('/') == std::string::npos ? "paper/" + n : n);
+            validation::CaseResult c;
+            c.name = fs::path(n).filename().string();
+            c.scene = load_scene(path, overrides);
+            if (!c.scene.reference) throw Error(path + ": no [reference] table: nothing to validate against");
+            for (const auto& v : validation::variants_for(c.scene, backends)) {
+                validation::CaseRun r;
+                r.case_name = c.name;
+                r.variant = v;
+                c.runs.push_back(std::move(r));
+            }
+            plan.cases.push_back(std::move(c));
+            plan.scene_paths.push_back(path);
+        }
+    } catch (const Error& e) {
+        std::cerr << "error: " << e.what() << "\n";
+        return kExitBadInput;
+    }
+
+    // validate owns these outputs under DIR and replaces them; nothing else in DIR is touched
+    const fs::path dir = options.out_dir;
+    std::error_code ec;
+    if (fs::exists(dir, ec) && !fs::is_directory(dir, ec)) {
+        std::cerr << "error: output path " << dir.string() << " exists and is not a directory\n";
+        return kExitBadInput;
+    }
+    fs::remove_all(dir / "runs", ec);
+    fs::remove_all(dir / "figures", ec);
+    fs::create_directories(dir, ec);
+    if (ec) {
+        std::cerr << "error: cannot create " << dir.string() << ": " << ec.message() << "\n";
+        return kExitFailure;
+    }
+
+    validation::run_plan(plan, [](const std::string& name) { return make_backend(name); });
+
+    report::ReportContext ctx;
+    for (const auto& b : available_backends())
+        for (const auto& name : backends)
+            if (b.name == name) ctx.backends.push_back({b.name, b.description, b.capabilities});
+    ctx.jobs = options.jobs;
+    ctx.command = command_line(options);
+    const auto figures = report::write_figures(plan.cases, dir.string());
+    ctx.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    const auto doc = report::build_report(plan.cases, figures, ctx);
+    write_text_atomic((dir / "summary.csv").string(), report::summary_csv(plan.cases));
+    write_text_atomic((dir / "report.md").string(), report::to_markdown(doc));
+    write_text_atomic((dir / "index.html").string(), report::to_html(doc));
+
+    std::cout << report::verdict_text(plan.cases);
+    if (!figures.note.empty()) std::cout << "figures: " << figures.note << "\n";
+    std::printf("\nreport: %s (and report.md, summary.csv); %.1f s wall\n", (dir / "index.html").string().c_str(),
+                ctx.wall_seconds);
+    return kExitOk;
+}
+
+}  // namespace cairn

@@ -1,0 +1,143 @@
+#include "report/document.hpp"
+
+#include <sstream>
+
+namespace cairn::report {
+
+void Document::heading(int level, std::string text) {
+    Block b;
+    b.kind = Block::Kind::heading;
+    b.level = level;
+    b.text = std::move(text);
+    blocks.push_back(std::move(b));
+}
+void Document::paragraph(std::string text) {
+    Block b;
+    b.text = std::move(text);
+    blocks.push_back(std::move(b));
+}
+void Document::bullets(std::vector<std::string> items) {
+    Block b;
+    b.kind = Block::Kind::bullets;
+    b.items = std::move(items);
+    blocks.push_back(std::move(b));
+}
+void Document::table(Table t) {
+    Block b;
+    b.kind = Block::Kind::table;
+    b.table = std::move(t);
+    blocks.push_back(std::move(b));
+}
+void Document::image(std::string path, std::string caption) {
+    Block b;
+    b.kind = Block::Kind::image;
+    b.image = std::move(path);
+    b.text = std::move(caption);
+    blocks.push_back(std::move(b));
+}
+
+namespace {
+
+std::string md_cell(const std::string& s) {
+    std::string o;
+    for (char c : s) o += c == '|' ? std::string("\\|") : std::string(1, c);
+    return o;
+}
+
+std::string esc(const std::string& s) {
+    std::string o;
+    for (char c : s) {
+        switch (c) {
+            case '<': o += "&lt;"; break;
+            case '>': o += "&gt;"; break;
+            case '&': o += "&amp;"; break;
+            case '"': o += "&quot;"; break;
+            default: o += c;
+        }
+    }
+    return o;
+}
+
+const char* cell_class(const std::string& s) {
+    if (s.rfind("MISS", 0) == 0 || s.rfind("failed", 0) == 0 || s.rfind("unstable", 0) == 0) return " class=\"miss\"";
+    if (s.rfind("pass", 0) == 0) return " class=\"pass\"";
+    if (s.rfind("cannot", 0) == 0) return " class=\"na\"";
+    return "";
+}
+
+}  // namespace
+
+std::string to_markdown(const Document& d) {
+    std::ostringstream o;
+    o << "# " << d.title << "\n\n";
+    for (const auto& b : d.blocks) {
+        switch (b.kind) {
+            case Block::Kind::heading: o << std::string(size_t(b.level), '#') << " " << b.text << "\n\n"; break;
+            case Block::Kind::paragraph: o << b.text << "\n\n"; break;
+            case Block::Kind::bullets:
+                for (const auto& i : b.items) o << "- " << i << "\n";
+                o << "\n";
+                break;
+            case Block::Kind::table: {
+                o << "|";
+                for (const auto& h : b.table.header) o << " " << md_cell(h) << " |";
+                o << "\n|";
+                for (size_t i = 0; i < b.table.header.size(); ++i) o << "---|";
+                o << "\n";
+                for (const auto& r : b.table.rows) {
+                    o << "|";
+                    for (const auto& c : r) o << " " << md_cell(c) << " |";
+                    o << "\n";
+                }
+                o << "\n";
+                break;
+            }
+            case Block::Kind::image: o << "![" << b.text << "](" << b.image << ")\n\n*" << b.text << "*\n\n"; break;
+        }
+    }
+    return o.str();
+}
+
+std::string to_html(const Document& d) {
+    std::ostringstream o;
+    o << "<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\"><title>" << esc(d.title)
+      << "</title>\n<style>\nbody{font-family:sans-serif;max-width:1100px;margin:2em auto;padding:0 1em;color:#222}\n"
+         "table{border-collapse:collapse;margin:0.5em 0 1.5em;font-size:0.9em}\n"
+         "td,th{border:1px solid #bbb;padding:3px 7px;text-align:left;vertical-align:top}\n"
+         "th{background:#eee}td.pass{background:#d8f0d8}td.miss{background:#f6d0d0;font-weight:bold}\n"
+         "td.na{background:#eee;color:#666}img{max-width:100%;border:1px solid #ccc}\n"
+         "figcaption{font-style:italic;margin-bottom:1.5em}\n</style></head><body>\n";
+    o << "<h1>" << esc(d.title) << "</h1>\n";
+    for (const auto& b : d.blocks) {
+        switch (b.kind) {
+            case Block::Kind::heading:
+                o << "<h" << b.level << ">" << esc(b.text) << "</h" << b.level << ">\n";
+                break;
+            case Block::Kind::paragraph: o << "<p>" << esc(b.text) << "</p>\n"; break;
+            case Block::Kind::bullets:
+                o << "<ul>\n";
+                for (const auto& i : b.items) o << "<li>" << esc(i) << "</li>\n";
+                o << "</ul>\n";
+                break;
+            case Block::Kind::table:
+                o << "<table>\n<tr>";
+                for (const auto& h : b.table.header) o << "<th>" << esc(h) << "</th>";
+                o << "</tr>\n";
+                for (const auto& r : b.table.rows) {
+                    o << "<tr>";
+                    for (const auto& c : r) o << "<td" << cell_class(c) << ">" << esc(c) << "</td>";
+                    o << "</tr>\n";
+                }
+                o << "</table>\n";
+                break;
+            case Block::Kind::image:
+                o << "<figure><img src=\"" << esc(b.image) << "\" alt=\"" << esc(b.text) << "\"><figcaption>"
+                  << esc(b.text) << "</figcaption></figure>\n";
+                break;
+        }
+    }
+    o << "</body></html>\n";
+    return o.str();
+}
+
+}  // namespace cairn::report

@@ -1,0 +1,42 @@
+#pragma once
+/// A small document model (headings, paragraphs, lists, tables, images) rendered both as Markdown
+/// (report.md) and as a self-contained HTML page (index.html), so the two never disagree.
+
+#include <string>
+#include <vector>
+
+namespace cairn::report {
+
+/// A table: header and rows of text cells.
+struct Table {
+    std::vector<std::string> header;
+    std::vector<std::vector<std::string>> rows;
+};
+
+/// One block of the document.
+struct Block {
+    enum class Kind { heading, paragraph, bullets, table, image } kind = Kind::paragraph;
+    int level = 2;                       ///< heading level (1-3)
+    std::string text;                    ///< heading, paragraph, image caption
+    std::vector<std::string> items;      ///< bullets
+    Table table;
+    std::string image;                   ///< image path relative to the document
+};
+
+/// The document.
+struct Document {
+    std::string title;
+    std::vector<Block> blocks;
+    void heading(int level, std::string text);
+    void paragraph(std::string text);
+    void bullets(std::vector<std::string> items);
+    void table(Table t);
+    void image(std::string path, std::string caption);
+};
+
+/// Markdown text of the document
+std::string to_markdown(const Document& d);
+/// a self-contained HTML page; cells starting with "MISS" or "pass" are coloured
+std::string to_html(const Document& d);
+
+}  // namespace cairn::report

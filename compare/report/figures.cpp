@@ -1,0 +1,160 @@
+#include "report/figures.hpp"
+
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include "geometry/hexahedron.hpp"
+#include "metrics/signal.hpp"
+#include "output/atomic_write.hpp"
+
+namespace fs = std::filesystem;
+
+namespace cairn::report {
+
+namespace {
+
+bool has_gnuplot() { return std::system("command -v gnuplot > /dev/null 2>&1") == 0; }
+
+std::string terminal() {
+    bool cairo = std::system("gnuplot -e 'set terminal pngcairo' > /dev/null 2>&1") == 0;
+    return cairo ? "pngcairo size 1000,760 font 'sans,10'" : "png size 1000,760";
+}
+
+/// t, measured, analytic (or NaN), difference (to the analytic curve, else to the first run)
+std::string curve_data(const validation::CaseRun& r, const validation::CaseRun* base) {
+    std::ostringstream o;
+    o.precision(10);
+    const auto& a = r.analysis;
+    o << "# t measured analytic difference\n";
+    for (size_t i = 0; i < a.measured.t.size(); ++i) {
+        double t = a.measured.t[i], y = a.measured.y[i];
+        double ref = i < a.analytic.size() ? a.analytic[i] : NAN;
+        double diff = std::isfinite(ref) ? y - ref : (base ? y - metrics::interpolate(base->analysis.measured, t) : NAN);
+        o << t << " " << y << " " << ref << " " << diff << "\n";
+    }
+    return o.str();
+}
+
+/// outline in the x-z plane of the corners 0, 1, 5, 4 (a block's −y side face), closed
+void outline(std::ostream& o, const std::array<Vec3, 8>& w) {
+    for (int i : {0, 1, 5, 4, 0}) o << w[i].x() << " " << w[i].z() << "\n";
+    o << "\n";
+}
+
+/// snapshots of the reference block every `every` seconds, and the fixed blocks
+std::string snapshot_data(const Scene& scene, const validation::CaseRun& r, double every, int max_shots) {
+    std::ostringstream o;
+    o.precision(8);
+    const int a = scene.reference->block;
+    const BlockDef& d = scene.blocks[a];
+    const Vec3 centre = mass_properties(d.corners, scene.materials[d.material].density).centre;
+    int f = 0;
+    for (int i = 0; i < a; ++i) f += scene.blocks[i].fixed ? 0 : 1;
+    double next = 0.0;
+    int shots = 0;
+    for (const auto& s : r.samples) {
+        if (s.t + 1e-9 < next || shots >= max_shots) continue;
+        std::array<Vec3, 8> w;
+        for (int i = 0; i < 8; ++i) w[i] = s.blocks[f].position + s.blocks[f].orientation * (d.corners[i] - centre);
+        outline(o, w);
+        next += every;
+        ++shots;
+    }
+    return o.str();
+}
+
+std::string fixed_outline(const Scene& scene) {
+    std::ostringstream o;
+    for (const auto& b : scene.blocks) {
+        if (!b.fixed) continue;
+        std::array<Vec3, 8> w;
+        for (int i = 0; i < 8; ++i) w[i] = b.position + b.orientation * b.corners[i];
+        outline(o, w);
+    }
+    return o.str();
+}
+
+std::string quoted(const std::string& s) {
+    std::string o = "\"";
+    for (char c : s) o += c == '"' ? std::string("\\\"") : std::string(1, c);
+    return o + "\"";
+}
+
+}  // namespace
+
+FigureSet write_figures(const std::vector<validation::CaseResult>& cases, const std::string& dir) {
+    FigureSet out;
+    if (!has_gnuplot()) {
+        out.note = "gnuplot was not found: no figures (install gnuplot-nox and rerun)";
+        return out;
+    }
+    const std::string term = terminal();
+    const fs::path fig = fs::path(dir) / "figures";
+    fs::create_directories(fig);
+    for (const auto& c : cases) {
+        std::vector<const validation::CaseRun*> runs;
+        for (const auto& r : c.runs)
+            if (r.analysed && !r.analysis.measured.t.empty()) runs.push_back(&r);
+        if (runs.empty()) continue;
+        const bool analytic = !runs.front()->analysis.analytic.empty();
+        std::ostringstream gp;
+        gp << "set terminal " << term << "\nset output " << quoted(c.name + ".png") << "\n"
+           << "set multiplot layout 2,1 title " << quoted(c.name + ": " + c.scene.description) << "\n"
+           << "set grid\nset key outside right top box\nset lmargin 12\nset rmargin 30\n"
+           << "set size 1,0.62\nset origin 0,0.36\nset ylabel " << quoted(runs.front()->analysis.quantity) << "\n"
+           << "plot ";
+        std::vector<std::string> lines;
+        if (analytic)
+            lines.push_back(quoted(c.name + "_" + runs.front()->variant.name + ".dat") +
+                            " u 1:3 w l lw 3 lc rgb 'black' dt 2 t " + quoted(runs.front()->analysis.analytic_label));
+        for (const auto* r : runs) {
+            const std::string file = c.name + "_" + r->variant.name + ".dat";
+            write_text_atomic((fig / file).string(), curve_data(*r, runs.front()));
+            lines.push_back(quoted(file) + " u 1:2 w l lw 1.5 t " + quoted(r->variant.name));
+        }
+        for (size_t i = 0; i < lines.size(); ++i) gp << (i ? ", \\\n     " : "") << lines[i];
+        gp << "\nset size 1,0.36\nset origin 0,0\nset xlabel 't (s)'\nset ylabel "
+           << quoted(analytic ? "run − analytic" : "run − " + runs.front()->variant.name) << "\nplot ";
+        for (size_t i = 0; i < runs.size(); ++i)
+            gp << (i ? ", \\\n     " : "") << quoted(c.name + "_" + runs[i]->variant.name + ".dat")
+               << " u 1:4 w l lw 1.5 t " << quoted(runs[i]->variant.name);
+        gp << "\nunset multiplot\n";
+        write_text_atomic((fig / (c.name + ".gp")).string(), gp.str());
+        std::vector<std::string> images{"figures/" + c.name + ".png"};
+
+        if (c.scene.reference->kind == "rolling") {
+            // snapshots of the cube on the incline, one panel per variant
+            write_text_atomic((fig / (c.name + "_fixed.dat")).string(), fixed_outline(c.scene));
+            std::ostringstream sg;
+            const int n = int(runs.size());
+            sg << "set terminal " << term << "\nset output " << quoted(c.name + "_snapshots.png") << "\n"
+               << "set multiplot layout " << (n + 1) / 2 << "," << (n > 1 ? 2 : 1) << " title "
+               << quoted(c.name + ": A every 0.25 s (x-z projection)") << "\n"
+               << "set size ratio -1\nset xrange [-0.5:4.0]\nset yrange [-1.0:3.6]\nunset key\nset grid\n";
+            for (const auto* r : runs) {
+                const std::string file = c.name + "_" + r->variant.name + "_snap.dat";
+                write_text_atomic((fig / file).string(), snapshot_data(c.scene, *r, 0.25, 16));
+                sg << "set title " << quoted(r->variant.name) << "\nplot " << quoted(c.name + "_fixed.dat")
+                   << " w filledcurves lc rgb '#cccccc', " << quoted(file) << " w l lw 1.2 lc rgb '#1f5fbf'\n";
+            }
+            sg << "unset multiplot\n";
+            write_text_atomic((fig / (c.name + "_snapshots.gp")).string(), sg.str());
+            images.push_back("figures/" + c.name + "_snapshots.png");
+        }
+        bool ok = true;
+        for (const auto& img : images) {
+            const std::string script = fs::path(img).stem().string() + ".gp";
+            const std::string cmd = "cd '" + fig.string() + "' && gnuplot '" + script + "' > '" + script + ".log' 2>&1";
+            ok = std::system(cmd.c_str()) == 0 && ok;
+        }
+        if (!ok) out.note += "gnuplot failed on some figures of " + c.name + " (see figures/*.gp.log). ";
+        for (const auto& img : images)
+            if (fs::exists(fs::path(dir) / img)) out.images[c.name].push_back(img);
+    }
+    return out;
+}
+
+}  // namespace cairn::report

@@ -1,0 +1,47 @@
+#pragma once
+/// The outputs of `cairn validate`: summary.csv, report.md / index.html, and the terminal verdict.
+
+#include <string>
+#include <vector>
+
+#include "backend/capabilities.hpp"
+#include "report/document.hpp"
+#include "report/figures.hpp"
+#include "validation/run_cases.hpp"
+
+namespace cairn::report {
+
+/// One backend's row of the capability matrix.
+struct BackendCapabilities {
+    std::string name;                        ///< registry name
+    std::string description;                 ///< one line
+    std::vector<FeatureSupport> features;    ///< feature, support, how
+};
+
+/// Everything the report shows beyond the runs.
+struct ReportContext {
+    std::vector<BackendCapabilities> backends;   ///< the capability matrix
+    double wall_seconds = 0.0;                   ///< wall time of the whole validation, s
+    int jobs = 1;                                ///< threads used
+    std::string command;                         ///< the command line, for reproduction
+};
+
+/// verdict of a run: "pass", "MISS", "cannot represent", "failed", "unstable", "no metrics"
+std::string run_verdict(const validation::CaseRun& r);
+
+/// the metric of a run that misses by the most (relative to its tolerance), as one line; the
+/// message for a run without metrics
+std::string worst_metric_text(const validation::CaseRun& r);
+
+/// the table of every metric of every run (case, variant, backend, contact mode, model, metric,
+/// unit, value, reference, relative error, tolerance, pass, wall seconds, status)
+std::string summary_csv(const std::vector<validation::CaseResult>& cases);
+
+/// the report: verdict table, conventions, per case figures and tables, capability matrix
+Document build_report(const std::vector<validation::CaseResult>& cases, const FigureSet& figures,
+                      const ReportContext& context);
+
+/// the verdict for the terminal: one line per case × variant with its worst metric
+std::string verdict_text(const std::vector<validation::CaseResult>& cases);
+
+}  // namespace cairn::report

@@ -1,0 +1,31 @@
+#pragma once
+/// What `cairn validate` runs: the paper's cases, and per case the variants (backend, contact mode,
+/// block model) whose results its analytic references can judge.
+
+#include <string>
+#include <vector>
+
+#include "scene/scene.hpp"
+
+namespace cairn::validation {
+
+/// One way of running a case.
+struct Variant {
+    std::string name;                    ///< e.g. "dem-rigid", "bullet-matched"
+    std::string backend;                 ///< registry name
+    std::string contact_mode = "rigid";  ///< RunOptions::contact_mode of the reference engines
+    std::string model = "rigid";         ///< model of every free block: "rigid" or "deformable"
+    /// true when the contact is a penalty spring (dem, or an engine in matched mode)
+    bool penalty() const { return backend == "dem" || contact_mode == "matched"; }
+};
+
+/// the paper's validation cases, in report order (scene names under scenarios/paper/)
+const std::vector<std::string>& paper_cases();
+
+/// the variants that make sense for `scene` among `backends` (registry names, in that order):
+/// dem rigid and deformable always; the reference engines in rigid mode where a rigid-contact
+/// reference holds (friction, rolling, undamped rocking) and in matched mode where the reference is
+/// the penalty spring (stability, impact, undamped and damped rocking)
+std::vector<Variant> variants_for(const Scene& scene, const std::vector<std::string>& backends);
+
+}  // namespace cairn::validation

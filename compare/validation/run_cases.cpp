@@ -1,0 +1,163 @@
+#include "validation/run_cases.hpp"
+
+#include <atomic>
+#include <cstdio>
+#include <filesystem>
+#include <map>
+#include <mutex>
+#include <thread>
+
+#include "error.hpp"
+#include "metrics/diff.hpp"
+#include "output/atomic_write.hpp"
+#include "output/run_record.hpp"
+#include "output/trajectory_csv.hpp"
+#include "run/runner.hpp"
+
+namespace fs = std::filesystem;
+
+namespace cairn::validation {
+
+const char* to_string(Outcome o) {
+    switch (o) {
+        case Outcome::completed: return "completed";
+        case Outcome::unstable: return "unstable";
+        case Outcome::refused: return "cannot represent";
+        case Outcome::failed: return "failed";
+    }
+    return "?";
+}
+
+namespace {
+
+/// one run: build, step, write its files, analyse; never throws
+void execute(CaseRun& run, const Scene& case_scene, const std::string& scene_path, const RunPlan& plan,
+             const BackendFactory& make) {
+    Scene scene = case_scene;
+    const BlockModel model = run.variant.model == "deformable" ? BlockModel::deformable : BlockModel::rigid;
+    for (auto& b : scene.blocks)
+        if (!b.fixed) b.model = model;
+    RunRequest request;
+    request.scene_path = scene_path;
+    request.overrides = plan.overrides;
+    request.model_override = run.variant.model;
+    request.options.contact_mode = run.variant.contact_mode;
+    std::unique_ptr<Backend> backend;
+    RunResult result;
+    try {
+        backend = make(run.variant.backend);
+        result = run_scene(*backend, scene, request.options);
+    } catch (const Error& e) {
+        run.outcome = Outcome::refused;
+        run.message = e.what();
+        return;
+    } catch (const std::exception& e) {
+        run.outcome = Outcome::failed;
+        run.message = std::string("unexpected failure: ") + e.what();
+        return;
+    }
+    run.outcome = result.status == RunStatus::completed ? Outcome::completed : Outcome::unstable;
+    run.message = result.message;
+    run.samples = std::move(result.samples);
+    run.wall_seconds = result.wall_seconds;
+    run.dt = result.dt;
+    run.steps = result.steps;
+    try {
+        // the same files as `cairn run`: a partial trajectory keeps its own name
+        const fs::path dir = run.out_dir;
+        fs::create_directories(dir);
+        const bool done = run.outcome == Outcome::completed;
+        fs::remove(dir / (done ? "trajectory.partial.csv" : "trajectory.csv"));
+        write_file_atomic((dir / (done ? "trajectory.csv" : "trajectory.partial.csv")).string(),
+                          [&](std::ostream& out) { write_trajectory_csv(out, scene, run.samples); });
+        result.samples = run.samples;
+        write_text_atomic((dir / "run.json").string(), run_record(scene, *backend, result, request).dump(2) + "\n");
+    } catch (const std::exception& e) {
+        run.outcome = Outcome::failed;
+        run.message = std::string("cannot write outputs: ") + e.what();
+    }
+    try {
+        if (run.samples.size() >= 3) {
+            run.analysis = cases::analyse_case(scene, run.samples, {run.variant.penalty()});
+            run.analysed = true;
+        }
+    } catch (const std::exception& e) {
+        run.message += (run.message.empty() ? "" : "; ") + std::string("analysis failed: ") + e.what();
+    }
+}
+
+/// info metrics of each analysed run against the case's first analysed run
+void diff_runs(CaseResult& c) {
+    const CaseRun* base = nullptr;
+    for (const auto& r : c.runs)
+        if (r.analysed) { base = &r; break; }
+    if (!base) return;
+    int probe = -1;
+    for (size_t i = 0; i < c.scene.probes.size(); ++i)
+        if (c.scene.probes[i].name == "node10") probe = int(i);
+    if (probe < 0 && !c.scene.probes.empty()) probe = 0;
+    for (auto& r : c.runs) {
+        if (!r.analysed || &r == base) continue;
+        double shift = 0.0;
+        const std::string vs = " vs " + base->variant.name;
+        if (r.analysis.has_event && base->analysis.has_event) {
+            shift = r.analysis.event_time - base->analysis.event_time;
+            r.diffs.push_back(metrics::info("first-event time shift" + vs, "s", shift, NAN,
+                                            "event: " + std::string(c.scene.reference->kind == "housner" ? "first impact"
+                                                                                                       : "first case event")));
+        }
+        if (probe >= 0) {
+            r.diffs.push_back(metrics::info("probe path RMS" + vs, "m",
+                                            metrics::probe_path_rms(r.samples, base->samples, probe, 0.0), NAN,
+                                            "node10, same times"));
+            if (shift != 0.0)
+                r.diffs.push_back(metrics::info("probe path RMS" + vs + ", aligned", "m",
+                                                metrics::probe_path_rms(r.samples, base->samples, probe, shift), NAN,
+                                                "node10, time shifted by the first-event shift"));
+        }
+    }
+}
+
+}  // namespace
+
+void run_plan(RunPlan& plan, const BackendFactory& make) {
+    struct Job { size_t c, r; };
+    std::vector<Job> jobs;
+    for (size_t c = 0; c < plan.cases.size(); ++c)
+        for (size_t r = 0; r < plan.cases[c].runs.size(); ++r) {
+            CaseRun& run = plan.cases[c].runs[r];
+            run.out_dir = (fs::path(plan.out_dir) / "runs" / plan.cases[c].name / run.variant.name).string();
+            jobs.push_back({c, r});
+        }
+    std::atomic<size_t> next{0};
+    std::atomic<size_t> done{0};
+    std::mutex print;
+    std::map<std::string, std::mutex> serial;
+    for (const auto& b : plan.serial_backends) serial[b];
+    auto worker = [&] {
+        for (size_t j; (j = next++) < jobs.size();) {
+            CaseResult& c = plan.cases[jobs[j].c];
+            CaseRun& run = c.runs[jobs[j].r];
+            auto it = serial.find(run.variant.backend);
+            if (it != serial.end()) {
+                std::lock_guard<std::mutex> lock(it->second);
+                execute(run, c.scene, plan.scene_paths[jobs[j].c], plan, make);
+            } else {
+                execute(run, c.scene, plan.scene_paths[jobs[j].c], plan, make);
+            }
+            size_t n = ++done;
+            if (!plan.quiet) {
+                std::lock_guard<std::mutex> lock(print);
+                std::fprintf(stderr, "[%zu/%zu] %s %s: %s (%.2f s)\n", n, jobs.size(), c.name.c_str(),
+                             run.variant.name.c_str(), to_string(run.outcome), run.wall_seconds);
+            }
+        }
+    };
+    const int n = std::max(1, std::min<int>(plan.jobs, int(jobs.size())));
+    std::vector<std::thread> pool;
+    for (int i = 0; i < n; ++i) pool.emplace_back(worker);
+    for (auto& t : pool) t.join();
+    for (auto& c : plan.cases) diff_runs(c);
+}
+
+}  // namespace cairn::validation
