@@ -16,7 +16,8 @@ World::World(const Scene& scene, double margin) : scene_(scene) {
     for (size_t i = 0; i < blocks_.size(); ++i)
         if (blocks_[i].deformable) accel_[i].assign(blocks_[i].x.size(), Vec3::Zero());
     for (size_t i = 0; i < loads_.size(); ++i) {
-        load_point_.push_back(world_position(blocks_[loads_[i].block], loads_[i]));
+        const Block& b = blocks_[loads_[i].block];
+        load_point_.push_back(scene.loads[i].body ? b.body.x : world_position(b, loads_[i]));
         load_force_.push_back(scene.loads[i].factor(0.0) * scene.loads[i].force);
     }
 }
@@ -120,13 +121,19 @@ void World::compute_forces() {
     for (size_t i = 0; i < loads_.size(); ++i) {
         const auto& l = scene_.loads[i];
         Block& b = blocks_[loads_[i].block];
-        Vec3 p = world_position(b, loads_[i]);
+        // a body load (ground motion) acts at the centre of mass, spread like the mass
+        Vec3 p = l.body ? b.body.x : world_position(b, loads_[i]);
         Vec3 f = l.factor(t_) * l.force;
         // trapezoid rule for the work over the step
         energy_.external += 0.5 * (f + load_force_[i]).dot(p - load_point_[i]);
         load_point_[i] = p;
         load_force_[i] = f;
-        add_point_force(b, loads_[i], f);
+        if (l.body && b.deformable) {
+            const auto& m = b.deformable->lumped_mass();
+            for (size_t n = 0; n < b.f.size(); ++n) b.f[n] += (m[n] / b.deformable->mass()) * f;
+        } else {
+            add_point_force(b, loads_[i], f);
+        }
     }
     energy_.strain = 0.0;
     for (size_t i = 0; i < blocks_.size(); ++i) {

@@ -2,8 +2,10 @@
 /// The scene: plain data, validated once on load (scene_io.hpp), read by every backend.
 /// SI units throughout; every field says its unit.
 
+#include <algorithm>
 #include <array>
 #include <map>
+#include <memory>
 #include <optional>
 #include <string>
 #include <variant>
@@ -78,6 +80,23 @@ struct Damping {
     double beta = 0.0;    ///< stiffness-proportional coefficient β, s (C = β·K; deformable only)
 };
 
+/// A time history sampled at increasing times, linearly interpolated, zero outside its span.
+struct TimeSeries {
+    std::vector<double> time;    ///< s, strictly increasing
+    std::vector<double> value;   ///< one value per time, in the unit of its use
+    /// the value at time t (s)
+    double at(double t) const;
+};
+
+/// Ground acceleration: the fixed blocks are the ground, and the scene is solved in the ground's
+/// frame, so every free block feels the inertial force −m·a_g(t) (loads generated on load).
+struct GroundMotion {
+    TimeSeries acceleration;          ///< m/s² along `direction` (units and scale applied)
+    Vec3 direction = Vec3::UnitX();   ///< unit vector, world
+    double start = 0.0;               ///< s: the record's t = 0 falls at this scene time
+    std::string source;               ///< the CSV file it came from, or "inline"
+};
+
 /// A force on a block at a material point; its direction is fixed in the world.
 struct LoadDef {
     int block = 0;                ///< index into Scene::blocks
@@ -85,12 +104,15 @@ struct LoadDef {
     Vec3 point = Vec3::Zero();    ///< point of application in the block frame, m
     double ramp = 0.0;            ///< s: force grows linearly from 0 over this time; 0 = applied at once
     double start = 0.0;           ///< s: the load acts from this time on
-    /// magnitude factor at time t (0 before start, linear ramp, then 1)
+    /// if set, the force is also scaled by this history at (t − start) (ground motion)
+    std::shared_ptr<const TimeSeries> history;
+    /// true: a body force spread like the block's mass (ground motion); false: at `point`
+    bool body = false;
+    /// magnitude factor at time t (0 before start, linear ramp, then 1; times the history)
     double factor(double t) const {
         if (t < start) return 0.0;
-        if (ramp <= 0.0) return 1.0;
-        double f = (t - start) / ramp;
-        return f < 1.0 ? f : 1.0;
+        double f = ramp <= 0.0 ? 1.0 : std::min(1.0, (t - start) / ramp);
+        return history ? f * history->at(t - start) : f;
     }
 };
 
@@ -135,7 +157,8 @@ struct Scene {
     ContactLaw contact;
     Damping damping;
     std::vector<BlockDef> blocks;          ///< in name order
-    std::vector<LoadDef> loads;
+    std::vector<LoadDef> loads;            ///< given loads, then those of the ground motion
+    std::optional<GroundMotion> ground_motion;
     std::vector<ProbeDef> probes;          ///< in name order
     RunControl run;
     std::optional<ReferenceDef> reference;

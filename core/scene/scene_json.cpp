@@ -1,3 +1,6 @@
+#include <algorithm>
+#include <cmath>
+
 #include "scene/scene_io.hpp"
 
 namespace cairn {
@@ -49,8 +52,18 @@ nlohmann::json scene_to_json(const Scene& scene) {
     for (const auto& b : scene.blocks) blocks.push_back(block_json(b, scene));
     json loads = json::array();
     for (const auto& l : scene.loads)
-        loads.push_back({{"block", block_name(l.block)}, {"force", vec(l.force)},
-                         {"point", vec(l.point)}, {"ramp", l.ramp}, {"start", l.start}});
+        if (!l.history)
+            loads.push_back({{"block", block_name(l.block)}, {"force", vec(l.force)},
+                             {"point", vec(l.point)}, {"ramp", l.ramp}, {"start", l.start}});
+    json ground = nullptr;
+    if (const auto& g = scene.ground_motion) {
+        double peak = 0.0;
+        for (double a : g->acceleration.value) peak = std::max(peak, std::abs(a));
+        ground = {{"source", g->source}, {"direction", vec(g->direction)}, {"start", g->start},
+                  {"samples", g->acceleration.time.size()},
+                  {"duration", g->acceleration.time.back() - g->acceleration.time.front()},
+                  {"peak_acceleration", peak}};
+    }
     json probes = json::array();
     for (const auto& p : scene.probes)
         probes.push_back({{"name", p.name}, {"block", block_name(p.block)}, {"point", vec(p.point)}});
@@ -84,6 +97,7 @@ nlohmann::json scene_to_json(const Scene& scene) {
             {"damping", {{"alpha", scene.damping.alpha}, {"beta", scene.damping.beta}}},
             {"blocks", blocks},
             {"loads", loads},
+            {"ground_motion", ground},
             {"probes", probes},
             {"reference", reference},
             {"backends", backends}};

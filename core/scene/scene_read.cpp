@@ -175,7 +175,7 @@ void read_backends(const TableReader& root, Scene& scene) {
 Scene read_scene(const Sources& src, const toml::table& root_table, const std::string& source) {
     TableReader root(src, root_table, "",
                      {"name", "description", "gravity", "run", "materials", "contact", "damping",
-                      "blocks", "loads", "probes", "reference", "backends"});
+                      "blocks", "loads", "ground_motion", "probes", "reference", "backends"});
     Scene scene;
     scene.source = source;
     scene.name = std::filesystem::path(source).stem().string();
@@ -191,6 +191,7 @@ Scene read_scene(const Sources& src, const toml::table& root_table, const std::s
     scene.damping = read_damping(root);
     read_blocks(root, scene);
     read_loads(root, scene);
+    read_ground_motion(root, scene);
     read_probes(root, scene);
     read_reference(root, scene);
     read_backends(root, scene);

@@ -15,6 +15,8 @@ Scene read_scene(const Sources& src, const toml::table& root, const std::string&
 void read_blocks(const TableReader& root, Scene& scene);
 /// [loads.NAME] (needs scene.blocks)
 void read_loads(const TableReader& root, Scene& scene);
+/// [ground_motion] (needs scene.blocks and scene.source): adds one body load per free block
+void read_ground_motion(const TableReader& root, Scene& scene);
 /// [probes.NAME] (needs scene.blocks)
 void read_probes(const TableReader& root, Scene& scene);
 

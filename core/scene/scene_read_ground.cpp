@@ -1,0 +1,123 @@
+// [ground_motion]: a ground acceleration record, from a CSV file or inline arrays, turned into
+// one inertial body load −m·a_g(t) per free block.
+#define CSV_IO_NO_THREAD
+#include <limits>   // libfccp's csv.h uses std::numeric_limits without including it
+#include <libfccp/csv.h>
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+
+#include "error.hpp"
+#include "geometry/hexahedron.hpp"
+#include "scene/scene_read.hpp"
+
+namespace cairn {
+
+double TimeSeries::at(double t) const {
+    if (time.empty() || t < time.front() || t > time.back()) return 0.0;
+    auto hi = std::upper_bound(time.begin(), time.end(), t);
+    if (hi == time.end()) return value.back();
+    const size_t j = size_t(hi - time.begin()), i = j - 1;
+    const double w = (t - time[i]) / (time[j] - time[i]);
+    return (1.0 - w) * value[i] + w * value[j];
+}
+
+namespace scene_detail {
+
+namespace {
+
+// two named columns of a CSV file ('#' starts a comment line)
+TimeSeries read_csv(const Item& file_item, const std::string& path, const std::string& time_column,
+                    const std::string& value_column) {
+    TimeSeries s;
+    try {
+        io::CSVReader<2, io::trim_chars<' ', '\t'>, io::no_quote_escape<','>, io::throw_on_overflow,
+                      io::single_line_comment<'#'>>
+            in(path);
+        in.read_header(io::ignore_extra_column, time_column, value_column);
+        double t, v;
+        while (in.read_row(t, v)) {
+            s.time.push_back(t);
+            s.value.push_back(v);
+        }
+    } catch (const io::error::can_not_open_file&) {
+        file_item.fail("cannot open the ground-motion file (" + path + ")");
+    } catch (const io::error::base& e) {
+        file_item.fail(std::string("cannot read the ground-motion file: ") + e.what());
+    }
+    return s;
+}
+
+}  // namespace
+
+void read_ground_motion(const TableReader& root, Scene& scene) {
+    Item section = root.get("ground_motion");
+    if (!section) return;
+    TableReader g = sub_table(root, "ground_motion",
+                              {"file", "time_column", "acceleration_column", "time", "acceleration",
+                               "units", "scale", "direction", "start"});
+    GroundMotion gm;
+    Item file = g.get("file"), time = g.get("time"), accel = g.get("acceleration");
+    if (file && (time || accel)) file.fail("give a file or inline time and acceleration arrays, not both");
+    if (file) {
+        std::filesystem::path p(file.string());
+        if (p.is_relative()) p = std::filesystem::path(scene.source).parent_path() / p;
+        std::string tcol = "t_s", acol = "accel_g";
+        if (Item it = g.get("time_column")) tcol = it.string();
+        if (Item it = g.get("acceleration_column")) acol = it.string();
+        gm.acceleration = read_csv(file, p.lexically_normal().string(), tcol, acol);
+        gm.source = p.lexically_normal().string();
+    } else {
+        if (!time) g.require("file");   // reports the missing key
+        Item a = g.require("acceleration");
+        const auto& ta = time.array();
+        gm.acceleration.time = time.numbers(ta.size());
+        gm.acceleration.value = a.numbers(ta.size());
+        gm.source = "inline";
+    }
+    const auto& ts = gm.acceleration.time;
+    (file ? file : time).check(ts.size() >= 2, "the record needs at least 2 samples");
+    for (size_t i = 1; i < ts.size(); ++i)
+        if (!(ts[i] > ts[i - 1]) || !std::isfinite(ts[i]) || !std::isfinite(gm.acceleration.value[i]))
+            (file ? file : time).fail("times must increase strictly and values be finite (sample " + std::to_string(i) + ")");
+    double unit = 1.0;
+    if (Item it = g.get("units")) {
+        const std::string u = it.string();
+        it.check(u == "g" || u == "m/s2", "expected \"g\" (× 9.81 m/s²) or \"m/s2\"");
+        unit = u == "g" ? 9.81 : 1.0;
+    } else if (file) {
+        unit = 9.81;   // the default column accel_g is in g
+    }
+    double scale = 1.0;
+    if (Item it = g.get("scale")) scale = it.number();
+    for (double& v : gm.acceleration.value) v *= unit * scale;
+    if (Item it = g.get("direction")) {
+        gm.direction = it.vec3();
+        it.check(gm.direction.norm() > 0.0, "the direction must not be zero");
+        gm.direction.normalize();
+    }
+    if (Item it = g.get("start")) {
+        gm.start = it.number();
+        it.check(gm.start >= 0.0, "must be >= 0");
+    }
+    // the inertial force on each free block: −m·a_g(t)·direction, spread like its mass
+    auto history = std::make_shared<const TimeSeries>(gm.acceleration);
+    for (size_t b = 0; b < scene.blocks.size(); ++b) {
+        const BlockDef& def = scene.blocks[b];
+        if (def.fixed) continue;
+        MassProperties mp = mass_properties(def.corners, scene.materials[size_t(def.material)].density);
+        LoadDef l;
+        l.block = int(b);
+        l.force = -mp.mass * gm.direction;
+        l.point = mp.centre;
+        l.start = gm.start;
+        l.history = history;
+        l.body = true;
+        scene.loads.push_back(l);
+    }
+    scene.ground_motion = gm;
+}
+
+}  // namespace scene_detail
+}  // namespace cairn

@@ -1,0 +1,49 @@
+// [ground_motion]: a record from a CSV file or inline arrays becomes one inertial body load per
+// free block; bad records are refused with file, line, key and value.
+#include <catch2/catch.hpp>
+
+#include "scene_fixture.hpp"
+
+using namespace cairn;
+using namespace cairn::test;
+using Catch::Matchers::Contains;
+
+TEST_CASE("an inline ground motion gives each free block the load -m a_g(t)", "[scene][ground]") {
+    Scene s = parse_scene(with_extra("[ground_motion]\ntime = [0, 1, 2]\nacceleration = [0, 2, 2]\n"
+                                     "units = \"m/s2\"\ndirection = [0, 2, 0]\n"),
+                          "t.toml");
+    REQUIRE(s.ground_motion);
+    REQUIRE(s.loads.size() == 1);   // A only: B is fixed (the ground)
+    const LoadDef& l = s.loads[0];
+    CHECK(l.body);
+    CHECK(l.force.isApprox(Vec3(0, -2600.0, 0)));            // −m along the unit direction
+    CHECK(l.factor(0.5) == Approx(1.0));                      // linear interpolation, m/s²
+    CHECK(l.factor(1.5) == Approx(2.0));
+    CHECK(l.factor(2.5) == 0.0);                              // zero after the record
+    CHECK(scene_to_json(s)["ground_motion"]["peak_acceleration"] == 2.0);
+}
+
+TEST_CASE("the El Centro record loads from CSV in g, relative to the scene file", "[scene][ground]") {
+    const std::string dir = std::string(CAIRN_SOURCE_DIR) + "/scenarios/earthquake/";
+    Scene s = parse_scene(with_extra("[ground_motion]\nfile = \"../data/elcentro_1940_ns.csv\"\nscale = 0.5\n"),
+                          dir + "t.toml");
+    const auto& a = s.ground_motion->acceleration;
+    // every data row: 0 to 31.18 s at 0.02 s is 1560 samples (the file's comment says 1559)
+    REQUIRE(a.time.size() == 1560);
+    CHECK(a.time.back() == Approx(31.18));
+    CHECK(a.time[1] - a.time[0] == Approx(0.02));
+    CHECK(a.value[0] == Approx(0.5 * 9.81 * 0.00630));   // first sample 0.00630 g, scaled by 0.5
+}
+
+TEST_CASE("bad ground motions are refused with file, line, key and value", "[scene][ground]") {
+    CHECK_THAT(error_of(with_extra("[ground_motion]\nfile = \"nope.csv\"\n")),
+               Contains("bad.toml:21: ground_motion.file = \"nope.csv\": cannot open the ground-motion file"));
+    CHECK_THAT(error_of(with_extra("[ground_motion]\ntime = [0, 0]\nacceleration = [1, 2]\n")),
+               Contains("bad.toml:21: ground_motion.time = [0, 0]: times must increase strictly"));
+    CHECK_THAT(error_of(with_extra("[ground_motion]\ntime = [0, 1]\nacceleration = [1, 2]\nunits = \"gal\"\n")),
+               Contains("bad.toml:23: ground_motion.units = \"gal\": expected \"g\""));
+    CHECK_THAT(error_of(with_extra("[ground_motion]\ntime = [0, 1]\nacceleration = [1]\n")),
+               Contains("ground_motion.acceleration"));
+    CHECK_THAT(error_of(with_extra("[ground_motion]\nfile = \"x.csv\"\ntime = [0, 1]\n")),
+               Contains("not both"));
+}
