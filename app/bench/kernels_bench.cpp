@@ -11,6 +11,7 @@
 
 #include "dem/dem_backend.hpp"
 #include "dem/deformable/deformable_body.hpp"
+#include "dem/deformable/hex8_batch.hpp"
 #include "dem/mesh.hpp"
 #include "geometry/hexahedron.hpp"
 
@@ -26,22 +27,39 @@ void set_threads(int n) {
 #endif
 }
 
-// internal forces of an n³ mesh of a 1 m cube with a small smooth deformation
-void internal_force(benchmark::State& state) {
+// the corners of a 1 m cube, distorted (a general trilinear mesh: J⁻¹ per Gauss point) or not
+// (parallelepipeds: one J⁻¹ per element)
+Corners cube(bool distorted) {
+    Corners c = box_corners(Vec3(1, 1, 1));
+    if (distorted) c[6] += Vec3(0.1, 0.05, 0.08), c[1] += Vec3(0.04, -0.03, 0.0);
+    return c;
+}
+
+// internal forces of an n³ mesh of a 1 m cube with a small smooth deformation; beta in µs
+void internal_force_case(benchmark::State& state, bool distorted, double beta) {
     const int n = int(state.range(0));
     set_threads(int(state.range(1)));
-    dem::Mesh mesh = dem::make_mesh(box_corners(Vec3(1, 1, 1)), {n, n, n});
-    dem::DeformableBody body(mesh, Material{"stone", 2600, 30e9, 0.2}, MassScheme::lumped, 0.0,
+    dem::Mesh mesh = dem::make_mesh(cube(distorted), {n, n, n});
+    dem::DeformableBody body(mesh, Material{"stone", 2600, 30e9, 0.2}, MassScheme::lumped, beta,
                              std::vector<char>(mesh.nodes.size(), 0));
     std::vector<Vec3> x = mesh.nodes, v(x.size(), Vec3::Zero()), f(x.size());
     for (auto& p : x) p += 1e-4 * Vec3(std::sin(3 * p.y()), std::cos(2 * p.z()), std::sin(p.x()));
+    for (auto& w : v) w = Vec3(0.01, -0.02, 0.03);
     for (auto _ : state) {
         std::fill(f.begin(), f.end(), Vec3::Zero());
         benchmark::DoNotOptimize(body.add_internal_forces(x, v, f));
     }
-    state.SetItemsProcessed(state.iterations() * int64_t(body.element_count()));
+    const double updates = double(state.iterations()) * double(body.element_count());
+    state.SetItemsProcessed(int64_t(updates));
     state.counters["elements"] = double(body.element_count());
+    // useful flops of the batched kernel (padding lanes not counted), per second of real time
+    state.counters["GFLOPs"] = benchmark::Counter(updates * dem::hex8_batch_flops(beta > 0) * 1e-9,
+                                                  benchmark::Counter::kIsRate);
 }
+
+void internal_force(benchmark::State& state) { internal_force_case(state, false, 0.0); }
+void internal_force_distorted(benchmark::State& state) { internal_force_case(state, true, 0.0); }
+void internal_force_damped(benchmark::State& state) { internal_force_case(state, false, 1e-6); }
 
 // whole steps of an n³ deformable cube resting on a fixed rigid cube (contact included)
 void whole_step(benchmark::State& state) {
@@ -79,5 +97,7 @@ void meshes(benchmark::internal::Benchmark* b) {
 }  // namespace
 
 BENCHMARK(internal_force)->Apply(meshes);
+BENCHMARK(internal_force_distorted)->Apply(meshes);
+BENCHMARK(internal_force_damped)->Apply(meshes);
 BENCHMARK(whole_step)->Apply(meshes);
 BENCHMARK_MAIN();

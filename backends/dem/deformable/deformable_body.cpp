@@ -2,8 +2,13 @@
 
 #include <Eigen/Eigenvalues>
 #include <Eigen/SVD>
+#include <algorithm>
 #include <cmath>
 #include <map>
+
+#ifdef _OPENMP
+#include <omp.h>
+#endif
 
 namespace cairn::dem {
 
@@ -68,6 +73,7 @@ DeformableBody::DeformableBody(const Mesh& mesh, const Material& mat, MassScheme
         first += lumped_[n] * ref_[n];
     }
     ref_centre_ = first / mass_;
+    for (size_t n = 0; n < nn; ++n) weighted_offset_.push_back(lumped_[n] * (ref_[n] - ref_centre_));
     // node → element incidence, for a deterministic gather of element forces
     incidence_start_.assign(nn + 1, 0);
     for (const auto& e : elements_)
@@ -80,6 +86,26 @@ DeformableBody::DeformableBody(const Mesh& mesh, const Material& mat, MassScheme
     batch_ = Hex8Batch(ref_, elements_);
     element_forces_.assign_zero(batch_.batch_count() * Hex8Batch::kForceStride);
     batch_energy_.assign(batch_.batch_count(), 0.0);
+    // nodes by the batch of their last element (ready to gather after it), and their first batch
+    {
+        const int nb = int(batch_.batch_count());
+        std::vector<int> last(nn, -1);
+        first_batch_.assign(nn, nb);
+        for (size_t el = 0; el < ne; ++el)
+            for (int a = 0; a < 8; ++a) {
+                const int n = elements_[el][a], b = int(el / Hex8Batch::kLanes);
+                last[n] = std::max(last[n], b);
+                first_batch_[n] = std::min(first_batch_[n], b);
+            }
+        ready_start_.assign(nb + 1, 0);
+        for (size_t n = 0; n < nn; ++n)
+            if (last[n] >= 0) ++ready_start_[last[n] + 1];
+        for (int b = 0; b < nb; ++b) ready_start_[b + 1] += ready_start_[b];
+        ready_.resize(ready_start_[nb]);
+        std::vector<int> slot(ready_start_.begin(), ready_start_.end() - 1);
+        for (size_t n = 0; n < nn; ++n)
+            if (last[n] >= 0) ready_[slot[last[n]]++] = int(n);
+    }
     batch_power_.assign(batch_.batch_count(), 0.0);
 
     // exact inertia: the consistent mass integrates ρ·r⊗r exactly for trilinear geometry
@@ -120,27 +146,43 @@ DeformableBody::DeformableBody(const Mesh& mesh, const Material& mat, MassScheme
 
 double DeformableBody::add_internal_forces(const std::vector<Vec3>& x, const std::vector<Vec3>& v,
                                            std::vector<Vec3>& f) {
-    const long nb = long(batch_.batch_count()), nn = long(x.size());
+    const long nb = long(batch_.batch_count());
     const Vec3* xp = x.data();
     const Vec3* vp = beta_ > 0.0 ? v.data() : nullptr;
     double* forces = element_forces_.data();
-    // one parallel region: elements (into their own slots), then a fixed-order gather per node,
-    // so the result does not depend on the thread count. Below ~16 batches a fork costs more
+    // the sum of a node's element forces, always in its incidence order: the result does not
+    // depend on which thread gathers it
+    auto gather = [&](int n) {
+        double s0 = 0.0, s1 = 0.0, s2 = 0.0;
+        for (int k = incidence_start_[n]; k < incidence_start_[n + 1]; ++k) {
+            const double* p = forces + incidence_[k];
+            s0 += p[0], s1 += p[Hex8Batch::kLanes], s2 += p[2 * Hex8Batch::kLanes];
+        }
+        f[n] -= Vec3(s0, s1, s2);
+    };
+    // each thread takes a contiguous range of batches and walks it in chunks, gathering a node as
+    // soon as its last element is done (the element forces are still in cache); nodes that also
+    // touch an earlier thread's range wait for the barrier. Below ~16 batches a fork costs more
     // than it saves.
+    constexpr long kChunk = 16;
 #pragma omp parallel if (nb >= 16)
     {
-#pragma omp for schedule(static)
-        for (long b = 0; b < nb; ++b)
-            batch_energy_[b] = batch_.compute(size_t(b), lame_, xp, vp, beta_, forces, batch_power_[b]);
-#pragma omp for schedule(static)
-        for (long n = 0; n < nn; ++n) {
-            double s0 = 0.0, s1 = 0.0, s2 = 0.0;
-            for (int k = incidence_start_[n]; k < incidence_start_[n + 1]; ++k) {
-                const double* p = forces + incidence_[k];
-                s0 += p[0], s1 += p[Hex8Batch::kLanes], s2 += p[2 * Hex8Batch::kLanes];
-            }
-            f[n] -= Vec3(s0, s1, s2);
+        long t = 0, nt = 1;
+#ifdef _OPENMP
+        t = omp_get_thread_num();
+        nt = omp_get_num_threads();
+#endif
+        const long b0 = nb * t / nt, b1 = nb * (t + 1) / nt;
+        for (long c0 = b0; c0 < b1; c0 += kChunk) {
+            const long c1 = std::min(c0 + kChunk, b1);
+            for (long b = c0; b < c1; ++b)
+                batch_energy_[b] = batch_.compute(size_t(b), lame_, xp, vp, beta_, forces, batch_power_[b]);
+            for (int k = ready_start_[c0]; k < ready_start_[c1]; ++k)
+                if (first_batch_[ready_[k]] >= b0) gather(ready_[k]);
         }
+#pragma omp barrier
+        for (int k = ready_start_[b0]; k < ready_start_[b1]; ++k)
+            if (first_batch_[ready_[k]] < b0) gather(ready_[k]);
     }
     double energy = 0.0;
     damping_power_ = 0.0;
@@ -206,12 +248,21 @@ double DeformableBody::kinetic_energy(const std::vector<Vec3>& x, const std::vec
 }
 
 void DeformableBody::pose(const std::vector<Vec3>& x, Vec3& centre, Mat3& rotation) const {
-    centre.setZero();
-    for (size_t n = 0; n < x.size(); ++n) centre += lumped_[n] * x[n];
-    centre /= mass_;
-    Mat3 a = Mat3::Zero();
-    for (size_t n = 0; n < x.size(); ++n) a += lumped_[n] * (x[n] - centre) * (ref_[n] - ref_centre_).transpose();
-    Eigen::JacobiSVD<Mat3> svd(a, Eigen::ComputeFullU | Eigen::ComputeFullV);
+    // one pass: Σ m(x − c)(X − X_c)ᵀ = Σ x·(m(X − X_c))ᵀ since Σ m(X − X_c) = 0
+    double c0 = 0, c1 = 0, c2 = 0, a[3][3] = {};
+    for (size_t n = 0; n < x.size(); ++n) {
+        const double* p = x[n].data();
+        const double* r = weighted_offset_[n].data();
+        const double m = lumped_[n];
+        c0 += m * p[0], c1 += m * p[1], c2 += m * p[2];
+        for (int i = 0; i < 3; ++i)
+            for (int j = 0; j < 3; ++j) a[i][j] += p[i] * r[j];
+    }
+    centre = Vec3(c0, c1, c2) / mass_;
+    Mat3 am;
+    for (int i = 0; i < 3; ++i)
+        for (int j = 0; j < 3; ++j) am(i, j) = a[i][j];
+    Eigen::JacobiSVD<Mat3> svd(am, Eigen::ComputeFullU | Eigen::ComputeFullV);
     Mat3 d = Mat3::Identity();
     d(2, 2) = (svd.matrixU() * svd.matrixV().transpose()).determinant() < 0 ? -1.0 : 1.0;
     rotation = svd.matrixU() * d * svd.matrixV().transpose();

@@ -56,6 +56,7 @@ private:
     double damping_power_ = 0.0;
     std::vector<Vec3> ref_;                          // reference node positions, block frame
     Vec3 ref_centre_ = Vec3::Zero();                 // centre of mass, block frame
+    std::vector<Vec3> weighted_offset_;              // m·(X − X_c) per node, kg·m
     std::vector<std::array<int, 8>> elements_;
     Hex8Batch batch_;                                // elements packed for SIMD
     std::vector<double> lumped_;                     // row-sum node masses, kg
@@ -64,6 +65,8 @@ private:
     std::vector<double> batch_energy_, batch_power_;
     std::vector<int> incidence_start_;               // node → its element forces, CSR
     std::vector<size_t> incidence_;                  // Hex8Batch::force_index of each incidence
+    std::vector<int> ready_start_, ready_;           // batch → nodes whose last element it holds, CSR
+    std::vector<int> first_batch_;                   // per node: batch of its first element
     // consistent mass, on the free nodes
     std::vector<int> free_index_;
     Eigen::SimplicialLLT<Eigen::SparseMatrix<double>> consistent_;

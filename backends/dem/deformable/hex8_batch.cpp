@@ -49,6 +49,18 @@ inline double lane_sum(vd v) {
     return s;
 }
 
+// out[c][slot] = p[3·node[l] + c] for the lanes l (Vec3 arrays are packed xyz triples)
+inline void gather(const int* node, const double* p, vd out[3][8], int slot) {
+#if defined(__AVX512F__)
+    const __m256i idx = _mm256_mullo_epi32(_mm256_loadu_si256(reinterpret_cast<const __m256i*>(node)),
+                                           _mm256_set1_epi32(3));
+    for (int c = 0; c < 3; ++c) out[c][slot] = (vd)_mm512_i32gather_pd(idx, p + c, 8);
+#else
+    for (int c = 0; c < 3; ++c)
+        for (int l = 0; l < L; ++l) out[c][slot][l] = p[3 * node[l] + c];
+#endif
+}
+
 // the corner signs of kCornerSigns, as compile-time constants
 constexpr int kSign[8][3] = {{-1, -1, -1}, {1, -1, -1}, {1, 1, -1}, {-1, 1, -1},
                              {-1, -1, 1},  {1, -1, 1},  {1, 1, 1},  {-1, 1, 1}};
@@ -96,21 +108,9 @@ double batch_force(const std::array<std::array<int, L>, 8>& node, const double* 
     const double g = 1.0 / std::sqrt(3.0);
     // gather the nodes per component in Walsh order, then their modes
     vd xm[3][8], vm[3][8];
-    for (int a = 0; a < 8; ++a) {
-        alignas(64) double bx[3][L], bv[3][L];
-        for (int l = 0; l < L; ++l) {
-            const double* p = x[node[a][l]].data();
-            bx[0][l] = p[0], bx[1][l] = p[1], bx[2][l] = p[2];
-            if (kDamping) {
-                const double* q = v[node[a][l]].data();
-                bv[0][l] = q[0], bv[1][l] = q[1], bv[2][l] = q[2];
-            }
-        }
-        for (int c = 0; c < 3; ++c) {
-            xm[c][walsh_index(a)] = load(bx[c]);
-            if (kDamping) vm[c][walsh_index(a)] = load(bv[c]);
-        }
-    }
+    for (int a = 0; a < 8; ++a) gather(node[a].data(), x[0].data(), xm, walsh_index(a));
+    if (kDamping)
+        for (int a = 0; a < 8; ++a) gather(node[a].data(), v[0].data(), vm, walsh_index(a));
     vd xg[3][3][4], vg[3][3][4];   // [component][k][sign combination]
     for (int c = 0; c < 3; ++c) {
         walsh(xm[c]);
