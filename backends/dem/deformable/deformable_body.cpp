@@ -165,24 +165,30 @@ double DeformableBody::add_internal_forces(const std::vector<Vec3>& x, const std
     // touch an earlier thread's range wait for the barrier. Below ~16 batches a fork costs more
     // than it saves.
     constexpr long kChunk = 16;
-#pragma omp parallel if (nb >= 16)
-    {
-        long t = 0, nt = 1;
+    if (nb < 16) {
+        for (long b = 0; b < nb; ++b)
+            batch_energy_[b] = batch_.compute(size_t(b), lame_, xp, vp, beta_, forces, batch_power_[b]);
+        for (int n : ready_) gather(n);
+    } else {
+#pragma omp parallel
+        {
+            long t = 0, nt = 1;
 #ifdef _OPENMP
-        t = omp_get_thread_num();
-        nt = omp_get_num_threads();
+            t = omp_get_thread_num();
+            nt = omp_get_num_threads();
 #endif
-        const long b0 = nb * t / nt, b1 = nb * (t + 1) / nt;
-        for (long c0 = b0; c0 < b1; c0 += kChunk) {
-            const long c1 = std::min(c0 + kChunk, b1);
-            for (long b = c0; b < c1; ++b)
-                batch_energy_[b] = batch_.compute(size_t(b), lame_, xp, vp, beta_, forces, batch_power_[b]);
-            for (int k = ready_start_[c0]; k < ready_start_[c1]; ++k)
-                if (first_batch_[ready_[k]] >= b0) gather(ready_[k]);
-        }
+            const long b0 = nb * t / nt, b1 = nb * (t + 1) / nt;
+            for (long c0 = b0; c0 < b1; c0 += kChunk) {
+                const long c1 = std::min(c0 + kChunk, b1);
+                for (long b = c0; b < c1; ++b)
+                    batch_energy_[b] = batch_.compute(size_t(b), lame_, xp, vp, beta_, forces, batch_power_[b]);
+                for (int k = ready_start_[c0]; k < ready_start_[c1]; ++k)
+                    if (first_batch_[ready_[k]] >= b0) gather(ready_[k]);
+            }
 #pragma omp barrier
-        for (int k = ready_start_[b0]; k < ready_start_[b1]; ++k)
-            if (first_batch_[ready_[k]] < b0) gather(ready_[k]);
+            for (int k = ready_start_[b0]; k < ready_start_[b1]; ++k)
+                if (first_batch_[ready_[k]] < b0) gather(ready_[k]);
+        }
     }
     double energy = 0.0;
     damping_power_ = 0.0;
@@ -204,7 +210,19 @@ void DeformableBody::accelerations(const std::vector<Vec3>& x, const std::vector
     if (scheme_ == MassScheme::consistent) {
         for (size_t n = 0; n < nn; ++n)
             if (free_index_[n] >= 0) work_rhs_.row(free_index_[n]) = f[n].transpose();
-        work_sol_ = consistent_.solve(work_rhs_);   // sizes already match: no allocation
+        // M⁻¹ = P⁻¹ L⁻ᵀ L⁻¹ P written out: Eigen's solve() allocates a temporary for the permutations
+        const auto& perm = consistent_.permutationP().indices();
+        if (perm.size() > 0) {
+            for (Eigen::Index i = 0; i < perm.size(); ++i) work_sol_.row(perm[i]) = work_rhs_.row(i);
+        } else {
+            work_sol_ = work_rhs_;
+        }
+        consistent_.matrixL().solveInPlace(work_sol_);
+        consistent_.matrixU().solveInPlace(work_sol_);
+        if (perm.size() > 0) {
+            for (Eigen::Index i = 0; i < perm.size(); ++i) work_rhs_.row(i) = work_sol_.row(perm[i]);
+            work_sol_.swap(work_rhs_);
+        }
         for (size_t n = 0; n < nn; ++n)
             a[n] = free_index_[n] >= 0 ? Vec3(work_sol_.row(free_index_[n]).transpose()) : Vec3::Zero();
         return;
