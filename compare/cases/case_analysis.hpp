@@ -22,7 +22,8 @@ struct CaseAnalysis {
     std::string quantity;            ///< what `measured` is, e.g. "penetration of node10 (m)"
     metrics::Series measured;        ///< the run's curve of `quantity`
     std::vector<double> analytic;    ///< the reference curve at measured.t; empty = none
-    std::string analytic_label;      ///< legend of the reference curve
+    std::string analytic_label;      ///< description of the reference curve
+    std::string analytic_key = "analytic";   ///< short legend of the reference curve
     double event_time = 0.0;         ///< time of the case's first event (for aligning runs), s
     bool has_event = false;          ///< false: no event found
 };

@@ -1,6 +1,7 @@
 // case (e): a block released tilted on one base edge rocks (Housner 1963)
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 
 #include "analytic/oracles.hpp"
 #include "cases/case_util.hpp"
@@ -63,6 +64,9 @@ CaseAnalysis analyse_rocking(const Scene& scene, const std::vector<Sample>& s, C
     out.analytic_label = has_r ? (contact.penalty ? "Housner, no impact loss (r = 1)"
                                                   : "Housner, rigid impact (r = " + std::to_string(r_ref) + ")")
                                : "Housner, rigid impact (guide only: no oracle for damped contact)";
+    char key[64];
+    std::snprintf(key, sizeof key, "Housner r = %.3g", std::isfinite(r_ref) ? r_ref : hb.velocity_ratio());
+    out.analytic_key = key;
     const double tol = contact.penalty ? 0.02 : 0.01;
     const std::string why = contact.penalty
         ? "issue 5: DEM within 2 % at the paper's kn (edge on a face, physics.md)"

@@ -72,6 +72,13 @@ std::string reference_text(const Scene& s) {
     return t + b;
 }
 
+/// legend of the case's analytic curve (from its first analysed run)
+std::string analytic_label(const CaseResult& c) {
+    for (const auto& r : c.runs)
+        if (r.analysed) return r.analysis.analytic.empty() ? "no analytic curve" : r.analysis.analytic_label;
+    return "no analytic curve";
+}
+
 }  // namespace
 
 Document build_report(const std::vector<CaseResult>& cases, const FigureSet& figures, const ReportContext& ctx) {
@@ -113,7 +120,8 @@ Document build_report(const std::vector<CaseResult>& cases, const FigureSet& fig
             for (const auto& img : it->second)
                 d.image(img, img.find("snapshots") != std::string::npos
                                  ? c.name + ": the cube on the incline every 0.25 s, per variant (x-z projection)"
-                                 : c.name + ": every variant over the analytic curve (top), difference (bottom)");
+                                 : c.name + ": every variant over the analytic curve (top: " + analytic_label(c) +
+                                       "), difference (bottom)");
         Table m{{"variant", "metric", "value", "reference", "rel. error", "tolerance", "verdict", "basis"}, {}};
         for (const auto& r : c.runs) {
             if (!r.analysed) {

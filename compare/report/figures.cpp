@@ -1,6 +1,8 @@
 #include "report/figures.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -20,7 +22,7 @@ bool has_gnuplot() { return std::system("command -v gnuplot > /dev/null 2>&1") =
 
 std::string terminal() {
     bool cairo = std::system("gnuplot -e 'set terminal pngcairo' > /dev/null 2>&1") == 0;
-    return cairo ? "pngcairo size 1000,760 font 'sans,10'" : "png size 1000,760";
+    return cairo ? "pngcairo noenhanced size 1000,760 font 'sans,10'" : "png noenhanced size 1000,760";
 }
 
 /// t, measured, analytic (or NaN), difference (to the analytic curve, else to the first run)
@@ -77,6 +79,13 @@ std::string fixed_outline(const Scene& scene) {
     return o.str();
 }
 
+/// a ten-colour palette, none of them black (black is the analytic curve)
+const char* kPalette =
+    "set linetype 1 lc rgb '#1f77b4'\nset linetype 2 lc rgb '#ff7f0e'\nset linetype 3 lc rgb '#2ca02c'\n"
+    "set linetype 4 lc rgb '#d62728'\nset linetype 5 lc rgb '#9467bd'\nset linetype 6 lc rgb '#8c564b'\n"
+    "set linetype 7 lc rgb '#e377c2'\nset linetype 8 lc rgb '#17becf'\nset linetype 9 lc rgb '#bcbd22'\n"
+    "set linetype 10 lc rgb '#7f7f7f'\n";
+
 std::string quoted(const std::string& s) {
     std::string o = "\"";
     for (char c : s) o += c == '"' ? std::string("\\\"") : std::string(1, c);
@@ -100,27 +109,59 @@ FigureSet write_figures(const std::vector<validation::CaseResult>& cases, const 
             if (r.analysed && !r.analysis.measured.t.empty()) runs.push_back(&r);
         if (runs.empty()) continue;
         const bool analytic = !runs.front()->analysis.analytic.empty();
+        // the difference panel is scaled to the second-worst run so that one far-off run (clipped,
+        // and said so) does not flatten the others
+        std::vector<double> worst;
+        for (const auto* r : runs) {
+            double w = 0.0;
+            std::istringstream in(curve_data(*r, runs.front()));
+            std::string line;
+            while (std::getline(in, line)) {
+                if (line.empty() || line[0] == '#') continue;
+                double a, b, c2, dd;
+                std::istringstream ls(line);
+                if (ls >> a >> b >> c2 >> dd && std::isfinite(dd)) w = std::max(w, std::abs(dd));
+            }
+            worst.push_back(w);
+        }
+        std::vector<double> sorted = worst;
+        std::sort(sorted.rbegin(), sorted.rend());
+        const bool clip = sorted.size() > 1 && sorted[1] > 0.0 && sorted[0] > 3.0 * sorted[1];
         std::ostringstream gp;
         gp << "set terminal " << term << "\nset output " << quoted(c.name + ".png") << "\n"
-           << "set multiplot layout 2,1 title " << quoted(c.name + ": " + c.scene.description) << "\n"
-           << "set grid\nset key outside right top box\nset lmargin 12\nset rmargin 30\n"
-           << "set size 1,0.62\nset origin 0,0.36\nset ylabel " << quoted(runs.front()->analysis.quantity) << "\n"
+           << kPalette << "set multiplot title " << quoted(c.name + ": " + c.scene.description) << "\n"
+           << "set grid\nset key outside right top\nset lmargin 12\nset rmargin 24\nset autoscale xfix\n"
+           << "set size 1,0.60\nset origin 0,0.37\nset ylabel " << quoted(runs.front()->analysis.quantity) << "\n"
            << "plot ";
         std::vector<std::string> lines;
-        if (analytic)
-            lines.push_back(quoted(c.name + "_" + runs.front()->variant.name + ".dat") +
-                            " u 1:3 w l lw 3 lc rgb 'black' dt 2 t " + quoted(runs.front()->analysis.analytic_label));
+        // each distinct reference curve once (rocking: rigid and penalty runs have different ones)
+        std::vector<std::string> keys;
         for (const auto* r : runs) {
-            const std::string file = c.name + "_" + r->variant.name + ".dat";
-            write_text_atomic((fig / file).string(), curve_data(*r, runs.front()));
-            lines.push_back(quoted(file) + " u 1:2 w l lw 1.5 t " + quoted(r->variant.name));
+            if (r->analysis.analytic.empty()) continue;
+            if (std::find(keys.begin(), keys.end(), r->analysis.analytic_key) != keys.end()) continue;
+            keys.push_back(r->analysis.analytic_key);
+            lines.push_back(quoted(c.name + "_" + r->variant.name + ".dat") + " u 1:3 w l lw 3 lc rgb '" +
+                            (keys.size() == 1 ? "black" : "#777777") + "' dt " + std::to_string(keys.size() + 1) +
+                            " t " + quoted(r->analysis.analytic_key));
+        }
+        for (size_t i = 0; i < runs.size(); ++i) {
+            const std::string file = c.name + "_" + runs[i]->variant.name + ".dat";
+            write_text_atomic((fig / file).string(), curve_data(*runs[i], runs.front()));
+            lines.push_back(quoted(file) + " u 1:2 w l lw 1.5 lc " + std::to_string(i + 1) + " t " +
+                            quoted(runs[i]->variant.name));
         }
         for (size_t i = 0; i < lines.size(); ++i) gp << (i ? ", \\\n     " : "") << lines[i];
-        gp << "\nset size 1,0.36\nset origin 0,0\nset xlabel 't (s)'\nset ylabel "
-           << quoted(analytic ? "run − analytic" : "run − " + runs.front()->variant.name) << "\nplot ";
+        std::string dlabel = analytic ? "run - analytic" : "run - " + runs.front()->variant.name;
+        if (clip) {
+            char b[64];
+            std::snprintf(b, sizeof b, "set yrange [%g:%g]\n", -1.5 * sorted[1], 1.5 * sorted[1]);
+            gp << "\n" << b;
+            dlabel += " (clipped)";
+        }
+        gp << "\nset size 1,0.37\nset origin 0,0\nset xlabel 't (s)'\nset ylabel " << quoted(dlabel) << "\nplot ";
         for (size_t i = 0; i < runs.size(); ++i)
             gp << (i ? ", \\\n     " : "") << quoted(c.name + "_" + runs[i]->variant.name + ".dat")
-               << " u 1:4 w l lw 1.5 t " << quoted(runs[i]->variant.name);
+               << " u 1:4 w l lw 1.5 lc " << i + 1 << " t " << quoted(runs[i]->variant.name);
         gp << "\nunset multiplot\n";
         write_text_atomic((fig / (c.name + ".gp")).string(), gp.str());
         std::vector<std::string> images{"figures/" + c.name + ".png"};
@@ -130,7 +171,10 @@ FigureSet write_figures(const std::vector<validation::CaseResult>& cases, const 
             write_text_atomic((fig / (c.name + "_fixed.dat")).string(), fixed_outline(c.scene));
             std::ostringstream sg;
             const int n = int(runs.size());
-            sg << "set terminal " << term << "\nset output " << quoted(c.name + "_snapshots.png") << "\n"
+            std::string big = term;
+            const auto at = big.find("760");
+            if (at != std::string::npos) big.replace(at, 3, "1150");
+            sg << "set terminal " << big << "\nset output " << quoted(c.name + "_snapshots.png") << "\n"
                << "set multiplot layout " << (n + 1) / 2 << "," << (n > 1 ? 2 : 1) << " title "
                << quoted(c.name + ": A every 0.25 s (x-z projection)") << "\n"
                << "set size ratio -1\nset xrange [-0.5:4.0]\nset yrange [-1.0:3.6]\nunset key\nset grid\n";

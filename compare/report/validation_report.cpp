@@ -86,7 +86,7 @@ std::string summary_csv(const std::vector<CaseResult>& cases) {
     for (const auto& c : cases) {
         for (const auto& r : c.runs) {
             const std::string head = c.name + "," + r.variant.name + "," + r.variant.backend + "," +
-                                     r.variant.contact_mode + "," + r.variant.model + ",";
+                                     r.variant.contact_label() + "," + r.variant.model + ",";
             const std::string tail = "," + num(r.wall_seconds) + "," + csv(validation::to_string(r.outcome)) + "\n";
             if (!r.analysed) {
                 std::string pass = r.outcome == Outcome::refused ? "cannot represent: " + r.message

@@ -9,23 +9,13 @@ namespace cairn::study {
 
 namespace {
 
-/// the angular-velocity component about `axis` of free block f
-metrics::Series omega_series(const std::vector<Sample>& s, int f, const Vec3& axis) {
-    metrics::Series w;
-    for (const auto& x : s) {
-        w.t.push_back(x.t);
-        w.y.push_back(x.blocks[size_t(f)].angular_velocity.dot(axis));
-    }
-    return w;
-}
-
-/// value at t of the least-squares parabola through the samples in [t0, t1]; NaN if under 3 samples
-double fit_at(const metrics::Series& w, double t0, double t1, double t) {
+/// slope at t of the least-squares parabola through the samples in [t0, t1]; NaN if under 3 samples
+double slope_at(const metrics::Series& th, double t0, double t1, double t) {
     int count = 0;
-    for (double x : w.t) count += x >= t0 && x <= t1;
+    for (double x : th.t) count += x >= t0 && x <= t1;
     if (count < 3) return NAN;
-    const auto c = metrics::polyfit(w, 2, t0, t1);
-    return c[0] + c[1] * t + c[2] * t * t;
+    const auto c = metrics::polyfit(th, 2, t0, t1);
+    return c[1] + 2.0 * c[2] * t;
 }
 
 }  // namespace
@@ -38,10 +28,9 @@ RockingImpact first_rocking_impact(const std::vector<Sample>& s, int f, const Ve
     if (cross.empty()) return r;
     r.found = true;
     r.time = cross[0];
-    const auto w = omega_series(s, f, axis);
-    r.omega_before = fit_at(w, r.time - window, r.time - 1e-12, r.time);
+    r.omega_before = slope_at(th, r.time - window, r.time - 1e-12, r.time);
     const double a0 = r.time + settle;
-    r.omega_after = w.t.back() >= a0 + window ? fit_at(w, a0, a0 + window, r.time) : NAN;
+    r.omega_after = th.t.back() >= a0 + window ? slope_at(th, a0, a0 + window, r.time) : NAN;
     r.ratio = r.omega_after / r.omega_before;
     return r;
 }

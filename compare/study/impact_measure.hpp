@@ -17,10 +17,12 @@ struct RockingImpact {
     double ratio = 0.0;          ///< omega_after / omega_before (NaN when the run ends too soon after)
 };
 
-/// First impact of free block `f` rocking about the unit world `axis`. ω before: the samples in
-/// [t − window, t) fitted by a parabola and evaluated at the crossing t; ω after: the samples in
-/// [t + settle, t + settle + window] fitted the same way and evaluated at t (the contact's own
-/// transient lasts about `settle`, s)
+/// First impact of free block `f` rocking about the unit world `axis`. ω before: the slope at the
+/// crossing t of the parabola fitted to θ(t) over [t − window, t); ω after: the same over
+/// [t + settle, t + settle + window], extrapolated back to t. θ, not ω, is fitted: after an impact on
+/// an undamped penalty contact the block hops on its new edge (ω jumps at every touch, θ stays
+/// continuous), so the fit gives the mean rotation rate the impact left. `settle` (s) skips the
+/// contact's own transient.
 RockingImpact first_rocking_impact(const std::vector<Sample>& s, int f, const Vec3& axis, double settle,
                                    double window);
 

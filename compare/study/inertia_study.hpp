@@ -66,7 +66,7 @@ using EngineInertia = std::function<Mat3(const Scene& scene, int block)>;
 /// Options of the study.
 struct StudyOptions {
     std::vector<int> ns{1, 2, 4, 8};   ///< elements per side
-    int repeats = 3;                   ///< runs per point; the wall time is their median
+    int repeats = 3;                   ///< runs per point (runs over 2 s: one); the wall time is their median
     int jobs = 2;                      ///< runs at a time
     bool quiet = false;                ///< no progress lines
 };

@@ -69,7 +69,7 @@ Table case_table(const std::vector<StudyPoint>& pts, const std::string& c) {
     t.head = {"scheme", "n", "mesh", "I_O ratio", "closed form", "engine I_O ratio"};
     if (rocking) {
         for (const char* h : {"first impact s", "error", "√(I_O) predicts", "ω ratio", "error vs Housner",
-                              "Housner with scheme's I_O"})
+                              "vs rigid run", "Housner with scheme's I_O"})
             t.head.push_back(h);
     } else {
         for (const char* h : {"bounce period s", "error"}) t.head.push_back(h);
@@ -87,6 +87,10 @@ Table case_table(const std::vector<StudyPoint>& pts, const std::string& c) {
                 r.push_back(signed_pct(p.t_predicted / p.t_housner - 1.0));
                 r.push_back(fmt("%.4f", p.omega_ratio));
                 r.push_back(signed_pct(p.ratio_error(), "%+.2f %%"));
+                double rigid = NAN;
+                for (const auto& q : pts)
+                    if (q.case_name == c && q.scheme == "rigid") rigid = q.omega_ratio;
+                r.push_back(signed_pct(p.omega_ratio / rigid - 1.0, "%+.2f %%"));
                 r.push_back(fmt("%.4f", p.omega_ratio_scheme));
             } else {
                 r.push_back(fmt("%.5f", p.bounce));

@@ -15,6 +15,8 @@ struct Variant {
     std::string backend;                 ///< registry name
     std::string contact_mode = "rigid";  ///< RunOptions::contact_mode of the reference engines
     std::string model = "rigid";         ///< model of every free block: "rigid" or "deformable"
+    /// the contact as reports name it: "penalty" for dem, else the engine's mode
+    std::string contact_label() const { return backend == "dem" ? "penalty" : contact_mode; }
     /// true when the contact is a penalty spring (dem, or an engine in matched mode)
     bool penalty() const { return backend == "dem" || contact_mode == "matched"; }
 };

@@ -1,0 +1,233 @@
+#include "bench/trade_sweep.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <set>
+
+#include "analytic/oracles.hpp"
+#include "bench/point_pool.hpp"
+#include "cases/case_analysis.hpp"
+#include "cases/case_util.hpp"
+#include "error.hpp"
+#include "run/runner.hpp"
+#include "scene/scene_io.hpp"
+
+namespace cairn::bench {
+
+namespace {
+
+/// a knob value as it appears in keys and overrides: %g
+std::string g(double v) {
+    char b[32];
+    std::snprintf(b, sizeof b, "%g", v);
+    return b;
+}
+
+/// the grids of one sweep size
+struct Grids {
+    std::vector<double> rock_kn, impact_kn, dt_safety, engine_dt;
+    std::vector<int> ns, iterations;
+    std::vector<std::string> schemes;
+};
+
+Grids grids(SweepSize size) {
+    switch (size) {
+        case SweepSize::quick:
+            return {{3e9}, {3e7}, {0.2, 0.05}, {1e-3, 1e-4}, {}, {50}, {}};
+        case SweepSize::standard:
+            return {{3e7, 3e8, 3e9}, {3e7, 3e9}, {0.4, 0.2, 0.1, 0.05, 0.02}, {1e-3, 3e-4, 1e-4, 3e-5, 1e-5},
+                    {1, 2, 4}, {10, 50}, {"lumped", "consistent", "corrected"}};
+        case SweepSize::full:
+            return {{3e7, 1e8, 3e8, 1e9, 3e9, 1e10}, {3e7, 3e8, 3e9},
+                    {0.8, 0.4, 0.2, 0.1, 0.05, 0.02, 0.01}, {2e-3, 1e-3, 3e-4, 1e-4, 3e-5, 1e-5, 3e-6},
+                    {1, 2, 4, 8}, {5, 10, 20, 50, 100}, {"lumped", "consistent", "barycentre", "corrected"}};
+    }
+    return {};
+}
+
+bool is_rocking(const std::string& c) { return c.rfind("rocking", 0) == 0; }
+
+/// the scene with overrides, its duration cut to just past the measured event, and a fine output
+Scene config_scene(const std::string& path, const std::vector<std::string>& sets) {
+    std::vector<Override> o;
+    for (const auto& s : sets) o.push_back(parse_override(s));
+    Scene scene = load_scene(path, o);
+    if (!scene.reference) throw Error(path + ": the trade bench needs a [reference]");
+    const BlockDef& a = scene.blocks.at(size_t(scene.reference->block));
+    if (scene.reference->kind == "housner") {
+        const oracle::HousnerBlock hb{0.5 * a.size.x(), 0.5 * a.size.z(), cases::gravity(scene)};
+        // 1.5 t1: soft edges make the impact late (+38 % for the slender block at kn 3e7, physics.md)
+        scene.run.duration = 1.5 * hb.first_impact(scene.reference->values.at("theta0")) + 0.05;
+        scene.run.output_interval = 2e-4;
+    } else {
+        const oracle::DroppedBlock d{cases::block_mass(scene, scene.reference->block),
+                                     scene.contact.kn * cases::contact_area(scene), cases::gravity(scene),
+                                     scene.reference->values.at("gap")};
+        scene.run.duration = d.first_contact() + 1.1 * d.bounce_period() + 0.02;
+        scene.run.output_interval = 1e-4;
+    }
+    return scene;
+}
+
+struct Builder {
+    const std::string& case_name;
+    const std::string& path;
+    std::vector<TradeConfig> out;
+    void add(const std::string& backend, const std::string& variant, const std::string& mode, double kn,
+             const std::vector<std::pair<std::string, std::string>>& knobs, std::vector<std::string> sets) {
+        TradeConfig c;
+        c.point.case_name = case_name;
+        c.point.backend = backend;
+        c.point.variant = variant;
+        c.point.kn = kn;
+        for (const auto& [k, v] : knobs) c.point.knobs += (c.point.knobs.empty() ? "" : " ") + k + "=" + v;
+        sets.push_back("contact.kn=" + g(kn));
+        sets.push_back("contact.ks=" + g(kn));
+        c.scene = config_scene(path, sets);
+        c.contact_mode = mode;
+        out.push_back(std::move(c));
+    }
+};
+
+}  // namespace
+
+const std::vector<std::string>& trade_cases() {
+    static const std::vector<std::string> c{"rocking", "rocking_slender", "impact"};
+    return c;
+}
+
+std::vector<TradeConfig> trade_configs(const std::string& case_name, const std::string& path,
+                                       const std::vector<std::string>& backends, SweepSize size) {
+    const Grids gr = grids(size);
+    const bool rock = is_rocking(case_name);
+    const auto& kns = rock ? gr.rock_kn : gr.impact_kn;
+    Builder b{case_name, path, {}};
+    for (const auto& be : backends) {
+        if (be == "dem") {
+            for (double kn : kns)
+                for (double f : gr.dt_safety)
+                    b.add("dem", "dem-rigid", "rigid", kn, {{"kn", g(kn)}, {"dt_safety", g(f)}},
+                          {"run.dt=\"auto\"", "run.dt_safety=" + g(f)});
+            // deformable: the mesh and the mass scheme at a stiff edge (rocking) or the paper's kn (impact)
+            const double kn = rock ? 3e9 : 3e7;
+            for (const auto& s : gr.schemes)
+                for (int n : gr.ns) {
+                    if (!rock && n > 2 && size != SweepSize::full) continue;   // 3-D meshes grow as n³
+                    const std::string div = rock ? "[" + g(n) + ",1," + g(n) + "]" : "[" + g(n) + "," + g(n) + "," + g(n) + "]";
+                    b.add("dem", "dem-deformable", "rigid", kn, {{"kn", g(kn)}, {"mass", s}, {"n", g(n)}},
+                          {"run.dt=\"auto\"", "blocks.A.model=\"deformable\"", "blocks.A.mesh.divisions=" + div,
+                           "blocks.A.mesh.mass=\"" + s + "\""});
+                }
+            continue;
+        }
+        // reference engines: their own rigid contact against Housner; matched springs for impact
+        const std::string mode = rock ? "rigid" : "matched";
+        for (double dt : gr.engine_dt) {
+            if (!rock) {
+                for (double kn : kns)
+                    b.add(be, be + "-" + mode, mode, kn, {{"kn", g(kn)}, {"dt", g(dt)}}, {"run.dt=" + g(dt)});
+                continue;
+            }
+            // solver: ODE's exact dWorldStep and QuickStep at each iteration count; the others' iterations
+            if (be == "ode")
+                b.add(be, be + "-" + mode, mode, 3e7, {{"dt", g(dt)}, {"stepper", "step"}},
+                      {"run.dt=" + g(dt), "backends.ode.stepper=\"step\""});
+            for (int it : gr.iterations) {
+                if (be == "ode")
+                    b.add(be, be + "-" + mode, mode, 3e7, {{"dt", g(dt)}, {"stepper", "quickstep"}, {"iterations", g(it)}},
+                          {"run.dt=" + g(dt), "backends.ode.stepper=\"quickstep\"", "backends.ode.iterations=" + g(it)});
+                else
+                    b.add(be, be + "-" + mode, mode, 3e7, {{"dt", g(dt)}, {"iterations", g(it)}},
+                          {"run.dt=" + g(dt), "backends." + be + ".iterations=" + g(it)});
+            }
+        }
+    }
+    return std::move(b.out);
+}
+
+double trade_error(const Scene& scene, const std::vector<Sample>& samples, bool penalty, std::string& metric) {
+    if (samples.size() < 3) { metric = "too few samples"; return NAN; }
+    const auto a = cases::analyse_case(scene, samples, {penalty});
+    const std::vector<std::string> wanted = scene.reference->kind == "housner"
+        ? std::vector<std::string>{"first impact"} : std::vector<std::string>{"bounce period", "peak penetration"};
+    double err = 0.0;
+    metric.clear();
+    for (const auto& w : wanted) {
+        const auto it = std::find_if(a.metrics.begin(), a.metrics.end(), [&](const auto& m) { return m.name == w; });
+        if (it == a.metrics.end() || !it->measured) { metric = w + " not reached"; return NAN; }
+        const double e = std::abs(it->relative_error());
+        if (metric.empty() || e > err) { err = e; metric = w; }
+    }
+    return err;
+}
+
+std::vector<TradePoint> run_trade(const std::vector<TradeConfig>& configs, const std::string& csv_path,
+                                  const TradeOptions& options, const BackendFactory& make) {
+    namespace fs = std::filesystem;
+    // resume: keep what the file has, run the rest
+    std::vector<TradePoint> done = read_trade_csv(csv_path);
+    std::set<std::string> have;
+    for (const auto& p : done) have.insert(p.key());
+    std::vector<const TradeConfig*> todo;
+    for (const auto& c : configs)
+        if (!have.count(c.point.key())) todo.push_back(&c);
+    std::error_code ec;
+    const bool fresh = !fs::exists(csv_path, ec) || fs::file_size(csv_path, ec) == 0;
+    if (!fresh) {
+        std::ifstream in(csv_path);
+        std::string first;
+        std::getline(in, first);
+        if (first != trade_csv_header())
+            throw Error(csv_path + ": not a trade.csv of this version (header differs); move it away to start afresh");
+    }
+    std::ofstream out(csv_path, std::ios::app);
+    if (!out) throw Error(csv_path + ": cannot write");
+    if (fresh) out << trade_csv_header() << "\n";
+    else {
+        // a row cut by an interruption has no newline: end it so the next row starts clean
+        std::ifstream in(csv_path, std::ios::binary);
+        in.seekg(-1, std::ios::end);
+        char last = '\n';
+        if (in.get(last) && last != '\n') out << "\n";
+    }
+    out.flush();
+    if (!options.quiet && !done.empty())
+        std::cerr << "trade: " << done.size() << " points already in " << csv_path << ", " << todo.size()
+                  << " to run\n";
+
+    PoolOptions po{options.repeats, options.jobs, options.quiet, "trade"};
+    std::vector<PoolJob> jobs;
+    for (const auto* c : todo) jobs.push_back({c->point.backend, c->point.variant + " " + c->point.case_name + " " + c->point.knobs,
+                                               &c->scene, c->contact_mode});
+    run_pool(jobs, po, make, [&](size_t j, const PoolResult& r, std::mutex& lock) {
+        TradePoint p = todo[j]->point;
+        p.status = r.outcome;
+        p.wall_seconds = r.median_wall;
+        p.dt = r.result.dt;
+        p.steps = r.result.steps;
+        p.sim_seconds = r.result.steps * r.result.dt;
+        p.error = NAN;
+        if (r.outcome == "completed") {
+            try {
+                const bool penalty = p.backend == "dem" || todo[j]->contact_mode == "matched";
+                p.error = trade_error(todo[j]->scene, r.result.samples, penalty, p.error_metric);
+                if (!std::isfinite(p.error)) p.status = "no event";
+            } catch (const std::exception& e) {
+                p.status = std::string("analysis failed: ") + e.what();
+            }
+        } else {
+            p.error_metric = r.message;
+        }
+        std::lock_guard<std::mutex> guard(lock);
+        out << trade_csv_row(p) << "\n";
+        out.flush();
+        done.push_back(p);
+    });
+    return done;
+}
+
+}  // namespace cairn::bench

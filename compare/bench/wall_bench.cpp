@@ -1,0 +1,147 @@
+#include "bench/wall_bench.hpp"
+
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <sstream>
+
+#include "bench/point_pool.hpp"
+#include "bench/trade_point.hpp"
+#include "error.hpp"
+#include "geometry/hexahedron.hpp"
+
+namespace cairn::bench {
+
+std::vector<WallSetup> wall_setups() {
+    return {{"kn 3e7, touching, dt 1e-3", 3e7, 1e-3, false, "rigid"},
+            {"kn 3e9, static penetration, dt 1e-4", 3e9, 1e-4, true, "rigid"},
+            {"kn 3e9, static penetration, dt 1e-4, engines matched", 3e9, 1e-4, true, "matched"}};
+}
+
+Scene wall_scene(int courses, int per_course, const WallSetup& setup) {
+    Scene s;
+    s.name = "wall";
+    s.source = "<wall " + std::to_string(courses) + "x" + std::to_string(per_course) + ">";
+    s.materials.push_back({"stone", 2600.0, 30e9, 0.2});
+    s.contact.kn = setup.kn;
+    s.contact.ks = setup.kn;
+    s.contact.friction = 0.6;
+    s.run.dt = setup.dt;
+    s.run.duration = 1.0;
+    auto add = [&](const std::string& name, const Vec3& size, const Vec3& centre, bool fixed) {
+        BlockDef b;
+        b.name = name;
+        b.size = size;
+        b.corners = box_corners(size);
+        b.position = centre;
+        b.fixed = fixed;
+        s.blocks.push_back(b);
+    };
+    const double h = 0.2, w = 0.4, g = 9.81, rho = 2600.0;
+    add("base", Vec3(0.4 * per_course + 1.0, 1.0, 0.5), Vec3(0, 0, -0.25), true);
+    double z = 0.0;
+    for (int c = 0; c < courses; ++c) {
+        // the joint under course c carries the courses above it: pressure (courses − c)·ρ g h
+        if (setup.placed) z -= (courses - c) * rho * g * h / setup.kn;
+        for (int i = 0; i < per_course; ++i) {
+            const double x = -0.5 * w * (per_course - 1) + w * i + (c % 2 ? 0.5 * w : 0.0);
+            add("b" + std::to_string(c) + "_" + std::to_string(i), Vec3(w, 0.2, h), Vec3(x, 0, z + 0.5 * h), false);
+        }
+        z += h;
+    }
+    return s;
+}
+
+namespace {
+
+std::string contact_text(const std::string& backend, const WallSetup& s) {
+    char b[200];
+    if (backend == "dem")
+        std::snprintf(b, sizeof b, "penalty kn = %g N/m³ per hitting point (grid 0.1 m), elastic-Coulomb", s.kn);
+    else if (s.contact_mode == "matched")
+        std::snprintf(b, sizeof b, "matched springs kn·A/4 per contact point, kn = %g N/m³", s.kn);
+    else if (backend == "bullet")
+        std::snprintf(b, sizeof b, "rigid: sequential impulses, 50 iterations, split impulse");
+    else if (backend == "ode")
+        std::snprintf(b, sizeof b, "rigid: QuickStep 50 iterations, ERP 0.2, CFM 1e-10");
+    else
+        std::snprintf(b, sizeof b, "rigid: solref 0.002, pyramidal cone");
+    return b;
+}
+
+}  // namespace
+
+std::vector<WallResult> run_wall(const std::vector<std::string>& backends, const std::vector<WallSetup>& setups,
+                                 int courses, int per_course, int steps, int repeats,
+                                 const std::function<std::unique_ptr<Backend>(const std::string&)>& make, bool quiet) {
+    std::vector<WallResult> out;
+    for (const auto& setup : setups) {
+        const Scene scene = wall_scene(courses, per_course, setup);
+        const size_t first = out.size();
+        for (const auto& name : backends) {
+            WallResult r{setup.name, name, contact_text(name, setup), setup.kn, setup.dt, courses * per_course, steps};
+            std::vector<double> rates;
+            try {
+                for (int k = 0; k < std::max(1, repeats) && r.status.empty(); ++k) {
+                    auto b = make(name);
+                    RunOptions ro;
+                    ro.contact_mode = setup.contact_mode;
+                    b->build(scene, ro);
+                    const auto t0 = std::chrono::steady_clock::now();
+                    for (int i = 0; i < steps; ++i)
+                        if (b->step() != StepStatus::ok) { r.status = "unstable: " + b->failure(); break; }
+                    const double sec = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+                    rates.push_back(steps / sec);
+                    const Sample x = b->sample();
+                    double worst = 0.0;
+                    for (int i = 0; i < per_course; ++i) {
+                        const size_t fb = size_t((courses - 1) * per_course + i);
+                        worst = std::max(worst, (x.blocks.at(fb).position - scene.blocks.at(fb + 1).position).norm());
+                    }
+                    r.top_settlement = worst;
+                }
+                if (r.status.empty()) r.status = "completed";
+            } catch (const Error& e) {
+                r.status = std::string("refused: ") + e.what();
+            }
+            r.steps_per_second = r.status == "completed" ? median(rates) : 0.0;
+            if (!quiet)
+                std::fprintf(stderr, "wall [%s] %s: %.1f steps/s, top moved %.3g m, %s\n", setup.name.c_str(),
+                             name.c_str(), r.steps_per_second, r.top_settlement, r.status.substr(0, 80).c_str());
+            out.push_back(r);
+        }
+        double bullet = 0.0;
+        for (size_t i = first; i < out.size(); ++i)
+            if (out[i].backend == "bullet") bullet = out[i].steps_per_second;
+        for (size_t i = first; i < out.size(); ++i)
+            out[i].ratio_to_bullet = bullet > 0.0 ? out[i].steps_per_second / bullet : 0.0;
+    }
+    return out;
+}
+
+std::string wall_csv(const std::vector<WallResult>& rows) {
+    std::ostringstream o;
+    o << "setup,backend,contact,kn,dt,blocks,steps,steps_per_second,ratio_to_bullet,top_settlement,status\n";
+    for (const auto& r : rows)
+        o << csv_field(r.setup) << "," << r.backend << "," << csv_field(r.contact) << "," << csv_number(r.kn) << ","
+          << csv_number(r.dt) << "," << r.blocks << "," << r.steps << "," << csv_number(r.steps_per_second) << ","
+          << csv_number(r.ratio_to_bullet) << "," << csv_number(r.top_settlement) << "," << csv_field(r.status) << "\n";
+    return o.str();
+}
+
+std::vector<WallResult> parse_wall_csv(const std::string& text) {
+    std::vector<WallResult> out;
+    std::istringstream in(text);
+    std::string line;
+    std::getline(in, line);
+    auto num = [](const std::string& s) { return s.empty() ? NAN : std::strtod(s.c_str(), nullptr); };
+    while (std::getline(in, line)) {
+        const auto f = split_csv(line);
+        if (f.size() != 11) continue;
+        out.push_back({f[0], f[1], f[2], num(f[3]), num(f[4]), std::atoi(f[5].c_str()), std::atoi(f[6].c_str()),
+                       num(f[7]), num(f[8]), num(f[9]), f[10]});
+    }
+    return out;
+}
+
+}  // namespace cairn::bench
