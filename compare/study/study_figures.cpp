@@ -96,7 +96,7 @@ std::vector<std::string> write_inertia_figures(const std::string& dir, const std
           << "set xlabel 'wall time per run, s (2 runs at a time on 2 cores)'\nset format y '%g'\n";
         for (size_t i = 0; i < kCases.size(); ++i)
             o << "set title '" << titles[i] << "'\nset ylabel '|" << (i < 2 ? "first-impact" : "bounce-period")
-              << " error| %'\nset label 1 'labels: n' at graph 0.02,0.05\n"
+              << " error| %'\nset label 1 'along each line: n = 1, 2, 4, 8' at graph 0.02,0.05\n"
               << plot_schemes("inertia_" + kCases[i] + ".dat", "5:4", false);
         o << "unset multiplot\n";
         figures.push_back({"inertia_error_cost", o.str()});
