@@ -195,22 +195,22 @@ ContactTotals ContactSet::apply(std::vector<Block>& blocks, double dt) {
                 Vec3 vt_rel = vrel - vrel.dot(n) * n;
                 const double ks_a = law_.ks * a;
                 Vec3 f_el = -ks_a * u;
-                Vec3 trial = f_el - ct_area * a * vt_rel;
                 const double cap = law_.friction * fn;
-                if (trial.norm() <= cap) {
-                    fs = trial;
-                    tot.stored += 0.5 * u.squaredNorm() * ks_a;
-                    tot.dissipated += ct_area * a * vt_rel.squaredNorm() * dt;
-                } else {
-                    // slip: the anchor follows so that the spring carries exactly μ·Fn
-                    fs = cap * trial / trial.norm();
-                    Vec3 x0 = pr.point + fs / ks_a;
-                    Projection moved = project(tq, x0, pr.xi);
+                if (f_el.norm() > cap) {
+                    // slip: the spring is capped at μ·Fn and its anchor follows; no shear dashpot
+                    fs = cap * f_el / f_el.norm();
+                    Projection moved = project(tq, pr.point + fs / ks_a, pr.xi);
                     anchor.face = face;
                     anchor.xi0 = moved.xi;
                     // friction work: the force at the cap times the distance the anchor slipped
                     tot.dissipated += fs.norm() * (moved.point - x0_old).norm();
                     tot.stored += 0.5 * fs.squaredNorm() / ks_a;
+                } else {
+                    // stick: spring plus shear dashpot, the dashpot trimmed so the sum stays ≤ μ·Fn
+                    fs = f_el - ct_area * a * vt_rel;
+                    if (fs.norm() > cap) fs *= cap / fs.norm();
+                    tot.stored += 0.5 * u.squaredNorm() * ks_a;
+                    tot.dissipated -= (fs - f_el).dot(vt_rel) * dt;
                 }
             } else {
                 anchor.side = -1;
