@@ -3,6 +3,7 @@
 #include <catch2/catch.hpp>
 
 #include <algorithm>
+#include <cmath>
 
 #include <filesystem>
 
@@ -96,4 +97,45 @@ TEST_CASE("the rocking scenes stand on their +x edge, leaning back toward uprigh
         Eigen::AngleAxisd aa(a.orientation);
         CHECK(aa.angle() == Approx(s.reference->values.at("theta0")).epsilon(1e-12));
     }
+}
+
+TEST_CASE("the damped paper scenes differ from their undamped twins only by the damping ratio",
+          "[scene][scenarios]") {
+    struct Case { const char* name; const char* twin; double zeta; };
+    for (Case c : {Case{"impact_damped", "impact", 0.1}, Case{"rocking_damped_02", "rocking", 0.2},
+                   Case{"rocking_damped_04", "rocking", 0.4}}) {
+        INFO(c.name);
+        Scene s = paper(c.name), t = paper(c.twin);
+        CHECK(s.contact.damping_rule == ContactDampingRule::ratio);
+        CHECK(s.contact.damping == c.zeta);
+        CHECK(t.contact.damping_rule == ContactDampingRule::none);
+        CHECK(s.contact.kn == t.contact.kn);
+        CHECK(s.blocks[0].position == t.blocks[0].position);
+        CHECK(s.blocks[0].orientation.coeffs() == t.blocks[0].orientation.coeffs());
+        CHECK(s.reference->values == t.reference->values);
+    }
+}
+
+TEST_CASE("the rolling scene puts the cube's bottom face on the 45 degree face, centre above its downhill edge",
+          "[scene][scenarios]") {
+    Scene s = paper("rolling");
+    const BlockDef& a = s.blocks[0];
+    const BlockDef& b = s.blocks[1];
+    REQUIRE(b.fixed);
+    // B's top face (corners 4-7) is the slope z = 2.9698 − x, 1.0 m wide and 4.2 m long
+    const double top = 4.2 * std::cos(M_PI / 4);
+    for (int i = 4; i < 8; ++i) CHECK(b.corners[i].z() == Approx(top - b.corners[i].x()).margin(1e-9));
+    CHECK((b.corners[5] - b.corners[4]).norm() == Approx(4.2).epsilon(1e-9));
+    // A's four bottom corners lie on that plane
+    for (int i = 0; i < 4; ++i) {
+        Vec3 p = a.position + a.orientation * a.corners[i];
+        CHECK(p.z() == Approx(top - p.x()).margin(1e-9));
+        CHECK(p.x() > 0.0);
+        CHECK(p.x() < top);
+    }
+    // neutral equilibrium: the centre of mass straight above the downhill bottom edge (corners 1, 2)
+    Vec3 com = a.position + a.orientation * mass_properties(a.corners, 2600).centre;
+    CHECK(com.x() == Approx((a.position + a.orientation * a.corners[1]).x()).margin(1e-9));
+    CHECK(s.contact.friction > 1.0);   // > tan 45°: it cannot slide
+    CHECK(s.reference->kind == "rolling");
 }
