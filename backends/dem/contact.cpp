@@ -1,6 +1,7 @@
 #include "contact.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <map>
 #include <tuple>
@@ -94,6 +95,7 @@ ContactTotals ContactSet::apply(std::vector<Block>& blocks, double dt) {
     std::vector<int> best_side(6);  // per target side: the hitting block's side most opposed to it
     std::vector<char> target_ok(6); // per target side: it is the target for that side
     double flush_tol = 0.0, closer_tol = 0.0;
+    std::array<ParallelogramFrame, 6> frames;   // rigid parallelogram target sides: closed-form projection
     for (auto& c : candidates_) {
         Block& hb = blocks[c.hit_block];
         Block& tb = blocks[c.target_block];
@@ -115,6 +117,8 @@ ContactTotals ContactSet::apply(std::vector<Block>& blocks, double dt) {
             // the target side: flush edges (stacked blocks) stay in contact as they bulge
             flush_tol = 1e-4 * tb.min_edge;
             closer_tol = 0.25 * tb.min_edge;
+            for (int s = 0; s < 6; ++s)
+                frames[s] = tb.mesh.side_grid[s].size() == 1 ? ParallelogramFrame::of(tb.side_quad(s)) : ParallelogramFrame{};
         }
         const int hit_side = hb.mesh.face_side[c.hit_face];
         // a face whose side is the hitting side of no target side cannot act: clear its anchors
@@ -142,28 +146,25 @@ ContactTotals ContactSet::apply(std::vector<Block>& blocks, double dt) {
             // the point acts on the allowed target side it lies deepest behind, if it is inside
             // the target block (behind every side plane, flush within rounding) and no other
             // side is clearly closer (it would be entering through that side instead)
+            double dist[6];
             int side = -1;
-            double d_side = 0.0;
-            for (size_t s = 0; s < sides.normal.size(); ++s) {
-                if (best_side[s] != hit_side || !target_ok[s]) continue;
-                double d = sides.normal[s].dot(xp - sides.centre[s]);
-                if (side < 0 || d > d_side) side = int(s), d_side = d;
+            for (int s = 0; s < 6; ++s) {
+                dist[s] = sides.normal[s].dot(xp - sides.centre[s]);
+                if (best_side[s] == hit_side && target_ok[s] && (side < 0 || dist[s] > dist[side])) side = s;
             }
-            bool inside = side >= 0 && d_side < 0.0;
-            for (size_t s = 0; inside && s < sides.normal.size(); ++s) {
-                if (int(s) == side) continue;
-                double d = sides.normal[s].dot(xp - sides.centre[s]);
-                if (d > flush_tol || d > d_side + closer_tol) inside = false;
-            }
+            bool inside = side >= 0 && dist[side] < 0.0;
+            for (int s = 0; inside && s < 6; ++s)
+                if (s != side && (dist[s] > flush_tol || dist[s] > dist[side] + closer_tol)) inside = false;
             if (!inside) {
                 anchor.side = -1;
                 continue;
             }
             // the target face: the side's boundary face under the point (rigid: the side itself)
+            const ParallelogramFrame& frame = frames[side];
             int face = tb.mesh.side_grid[side][0];
             if (tb.mesh.side_grid[side].size() > 1) face = tb.face_at(side, project(tb.side_quad(side), xp).xi);
             const Quad tq = tb.face_quad(face);
-            Projection pr = project(tq, xp);
+            Projection pr = frame.valid ? frame.project(xp) : project(tq, xp);
             const Vec3& n = pr.normal;
             const double depth = n.dot(pr.point - xp);
             if (!(depth > 0.0)) {
@@ -189,7 +190,7 @@ ContactTotals ContactSet::apply(std::vector<Block>& blocks, double dt) {
             Vec3 fs = Vec3::Zero();
             if (law_.ks > 0.0 && fn > 0.0) {
                 if (anchor.side != side) anchor = Anchor{side, face, pr.xi};
-                const Vec3 x0_old = quad_point(tb.face_quad(anchor.face), anchor.xi0);
+                const Vec3 x0_old = frame.valid ? frame.point(anchor.xi0) : quad_point(tb.face_quad(anchor.face), anchor.xi0);
                 Vec3 u = pr.point - x0_old;
                 u -= u.dot(n) * n;
                 Vec3 vt_rel = vrel - vrel.dot(n) * n;
@@ -199,7 +200,7 @@ ContactTotals ContactSet::apply(std::vector<Block>& blocks, double dt) {
                 if (f_el.norm() > cap) {
                     // slip: the spring is capped at μ·Fn and its anchor follows; no shear dashpot
                     fs = cap * f_el / f_el.norm();
-                    Projection moved = project(tq, pr.point + fs / ks_a, pr.xi);
+                    Projection moved = frame.valid ? frame.project(pr.point + fs / ks_a) : project(tq, pr.point + fs / ks_a, pr.xi);
                     anchor.face = face;
                     anchor.xi0 = moved.xi;
                     // friction work: the force at the cap times the distance the anchor slipped

@@ -47,6 +47,22 @@ Projection project(const Quad& c, const Vec3& p, Vec2 start) {
     return pr;
 }
 
+ParallelogramFrame ParallelogramFrame::of(const Quad& c) {
+    ParallelogramFrame f;
+    const Vec3 twist = c[0] - c[1] + c[2] - c[3];
+    if (twist.squaredNorm() > 1e-24 * (c[2] - c[0]).squaredNorm()) return f;
+    f.valid = true;
+    f.o = 0.25 * (c[0] + c[1] + c[2] + c[3]);
+    f.a = 0.5 * (c[1] - c[0]);
+    f.b = 0.5 * (c[3] - c[0]);
+    f.n = f.a.cross(f.b).normalized();
+    f.g11 = f.a.dot(f.a);
+    f.g12 = f.a.dot(f.b);
+    f.g22 = f.b.dot(f.b);
+    f.det = f.g11 * f.g22 - f.g12 * f.g12;
+    return f;
+}
+
 double quad_area(const Quad& c) {
     // 2x2 Gauss: exact for the bilinear jacobian of a planar face
     const double g = 1.0 / std::sqrt(3.0);

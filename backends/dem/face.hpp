@@ -34,6 +34,30 @@ struct Projection {
 };
 Projection project(const Quad& c, const Vec3& p, Vec2 start = Vec2::Zero());
 
+/// A face that is a parallelogram, x(ξ,η) = o + ξ·a + η·b exactly: projection in closed form.
+struct ParallelogramFrame {
+    bool valid = false;          ///< false: the face is not a parallelogram (use project())
+    Vec3 o = Vec3::Zero();       ///< centre, m
+    Vec3 a = Vec3::Zero();       ///< ∂x/∂ξ, m
+    Vec3 b = Vec3::Zero();       ///< ∂x/∂η, m
+    Vec3 n = Vec3::UnitZ();      ///< outward unit normal
+    double g11 = 0, g12 = 0, g22 = 0, det = 1;   ///< metric a·a, a·b, b·b and its determinant, m², m⁴
+    /// the frame of a face (valid only for a parallelogram)
+    static ParallelogramFrame of(const Quad& c);
+    /// the point at (ξ, η), m
+    Vec3 point(const Vec2& xi) const { return o + xi[0] * a + xi[1] * b; }
+    /// the closest point of the face's plane to p
+    Projection project(const Vec3& p) const {
+        const Vec3 r = p - o;
+        const double r1 = a.dot(r), r2 = b.dot(r);
+        Projection pr;
+        pr.xi = Vec2((g22 * r1 - g12 * r2) / det, (g11 * r2 - g12 * r1) / det);
+        pr.point = point(pr.xi);
+        pr.normal = n;
+        return pr;
+    }
+};
+
 /// a hitting point of a face: natural coordinates and tributary area
 struct HitPoint {
     Vec2 xi = Vec2::Zero();   ///< natural coordinates on the hitting face
