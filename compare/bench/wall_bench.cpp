@@ -79,7 +79,7 @@ std::vector<WallResult> run_wall(const std::vector<std::string>& backends, const
         const Scene scene = wall_scene(courses, per_course, setup);
         const size_t first = out.size();
         for (const auto& name : backends) {
-            WallResult r{setup.name, name, contact_text(name, setup), setup.kn, setup.dt, courses * per_course, steps};
+            WallResult r{setup.name, name, contact_text(name, setup), setup.kn, setup.dt, courses * per_course, steps, 0.0, 0.0, 0.0, ""};
             std::vector<double> rates;
             try {
                 for (int k = 0; k < std::max(1, repeats) && r.status.empty(); ++k) {
