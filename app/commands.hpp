@@ -55,6 +55,24 @@ struct ValidateOptions {
 /// `cairn validate`: the paper's cases on every backend against their analytic references
 int validate_command(const ValidateOptions& options);
 
+/// Options of `cairn bench` (docs/bench.md).
+struct BenchOptions {
+    std::string out_dir = "out/bench";   ///< trade.csv, stability.csv, wall.csv, bench.md, bench.html, figures/
+    std::vector<std::string> backends;   ///< empty = every available backend
+    std::vector<std::string> cases;      ///< trade: rocking, rocking_slender, impact (empty = all)
+    bool full = false;                   ///< trade: the big sweep
+    bool quick = false;                  ///< trade: two or three points per backend (tests)
+    int repeats = 3;                     ///< runs per trade point / wall backend; wall time is their median
+    int jobs = 2;                        ///< points at a time
+    long long long_steps = 1000000;      ///< stability: steps of the long resting run
+    int courses = 30;                    ///< wall: courses of 10 bricks
+    int wall_steps = 200;                ///< wall: steps per repeat
+    bool quiet = false;                  ///< no progress lines
+};
+
+/// `cairn bench trade|stability|wall|all`
+int bench_command(const std::string& which, const BenchOptions& options);
+
 /// true when stderr is a terminal (progress lines make sense)
 bool stderr_is_terminal();
 

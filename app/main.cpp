@@ -60,6 +60,29 @@ int main(int argc, char** argv) {
     validate->add_option("--jobs,-j", val.jobs, "runs at a time (default 2)")->check(CLI::Range(1, 64));
     validate->add_flag("--quiet,-q", val.quiet, "no progress lines");
 
+    BenchOptions bench;
+    auto* bench_cmd = app.add_subcommand("bench", "speed against accuracy, stability, throughput (docs/bench.md)");
+    bench_cmd->require_subcommand(1);
+    for (const char* which : {"trade", "stability", "wall", "all"}) {
+        auto* sub = bench_cmd->add_subcommand(which, std::string("cairn bench ") + which);
+        sub->add_option("--out,-o", bench.out_dir, "output directory (default out/bench)");
+        sub->add_option("--backends", bench.backends, "comma-separated backend names")->delimiter(',');
+        sub->add_option("--jobs,-j", bench.jobs, "runs at a time (default 2)")->check(CLI::Range(1, 64));
+        sub->add_option("--repeats", bench.repeats, "runs per point; median wall time (default 3)")->check(CLI::Range(1, 9));
+        sub->add_flag("--quiet,-q", bench.quiet, "no progress lines");
+        if (std::string(which) == "trade" || std::string(which) == "all") {
+            sub->add_option("--cases", bench.cases, "rocking,rocking_slender,impact (default all)")->delimiter(',');
+            sub->add_flag("--full", bench.full, "the big sweep");
+            sub->add_flag("--quick", bench.quick, "two or three points per backend");
+        }
+        if (std::string(which) == "stability" || std::string(which) == "all")
+            sub->add_option("--long-steps", bench.long_steps, "steps of the long resting run (default 1e6)");
+        if (std::string(which) == "wall" || std::string(which) == "all") {
+            sub->add_option("--courses", bench.courses, "courses of 10 bricks (default 30)")->check(CLI::Range(1, 200));
+            sub->add_option("--steps", bench.wall_steps, "steps per repeat (default 200)")->check(CLI::Range(1, 100000));
+        }
+    }
+
     try {
         app.parse(argc, argv);
     } catch (const CLI::ParseError& e) {
@@ -73,6 +96,8 @@ int main(int argc, char** argv) {
         if (app.got_subcommand(run_all)) return run_all_command(all);
         if (study_inertia->parsed()) return study_inertia_command(inertia);
         if (app.got_subcommand(validate)) return validate_command(val);
+        for (auto* sub : bench_cmd->get_subcommands())
+            if (sub->parsed()) return bench_command(sub->get_name(), bench);
     } catch (const std::exception& e) {
         std::cerr << "error: " << e.what() << "\n";
         return kExitFailure;
