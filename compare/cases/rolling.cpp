@@ -29,9 +29,11 @@ CaseAnalysis analyse_rolling(const Scene& scene, const std::vector<Sample>& s, C
     size_t n_on = 0;
     while (n_on < s.size() && x.y[n_on] <= x_end) ++n_on;
     CaseAnalysis r;
-    r.quantity = "drop of A's centre of mass, m";
-    r.measured.t = z.t;
-    for (double y : z.y) r.measured.y.push_back(z.y[0] - y);
+    r.quantity = "drop of A's centre of mass while on the slope, m";
+    for (size_t i = 0; i < n_on; ++i) {
+        r.measured.t.push_back(z.t[i]);
+        r.measured.y.push_back(z.y[0] - z.y[i]);
+    }
     const double t_on = n_on ? s[n_on - 1].t : 0.0;
 
     // quarter turns completed on the slope, and the time each was first completed
