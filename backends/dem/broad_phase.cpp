@@ -5,13 +5,14 @@
 
 namespace cairn::dem {
 
-std::vector<std::pair<int, int>> overlapping_pairs(const std::vector<Aabb>& boxes) {
-    std::vector<int> order(boxes.size());
+void overlapping_pairs(const std::vector<Aabb>& boxes, std::vector<int>& order,
+                       std::vector<std::pair<int, int>>& pairs) {
+    order.resize(boxes.size());
     std::iota(order.begin(), order.end(), 0);
     std::sort(order.begin(), order.end(), [&](int a, int b) {
         return boxes[a].lo.x() < boxes[b].lo.x() || (boxes[a].lo.x() == boxes[b].lo.x() && a < b);
     });
-    std::vector<std::pair<int, int>> pairs;
+    pairs.clear();
     for (size_t a = 0; a < order.size(); ++a) {
         const Aabb& ba = boxes[order[a]];
         for (size_t b = a + 1; b < order.size(); ++b) {
@@ -21,7 +22,6 @@ std::vector<std::pair<int, int>> overlapping_pairs(const std::vector<Aabb>& boxe
         }
     }
     std::sort(pairs.begin(), pairs.end());
-    return pairs;
 }
 
 }  // namespace cairn::dem

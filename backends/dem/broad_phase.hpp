@@ -8,7 +8,9 @@
 
 namespace cairn::dem {
 
-/// index pairs (i < j) of overlapping boxes, in a deterministic order
-std::vector<std::pair<int, int>> overlapping_pairs(const std::vector<Aabb>& boxes);
+/// index pairs (i < j) of overlapping boxes into `pairs`, sorted; `order` is scratch space
+/// (both keep their capacity between calls)
+void overlapping_pairs(const std::vector<Aabb>& boxes, std::vector<int>& order,
+                       std::vector<std::pair<int, int>>& pairs);
 
 }  // namespace cairn::dem

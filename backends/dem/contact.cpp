@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <map>
 #include <tuple>
 
 #include "broad_phase.hpp"
@@ -27,28 +26,32 @@ bool is_target(const std::vector<Block>& blocks, int h, int hit_side, int t, int
 }
 
 void ContactSet::refresh(std::vector<Block>& blocks) {
-    std::map<std::tuple<int, int, int>, std::vector<Anchor>> old;
-    for (auto& c : candidates_) old[{c.hit_block, c.hit_face, c.target_block}] = std::move(c.anchors);
+    // the previous candidates, sorted by (hitting block, target block, face), hand their anchors on
+    auto key = [](const Candidate& c) { return std::make_tuple(c.hit_block, c.target_block, c.hit_face); };
+    previous_.swap(candidates_);
     candidates_.clear();
+    std::sort(previous_.begin(), previous_.end(), [&](const Candidate& a, const Candidate& b) { return key(a) < key(b); });
 
-    std::vector<Aabb> boxes(blocks.size());
+    boxes_.resize(blocks.size());
     for (size_t i = 0; i < blocks.size(); ++i) {
-        boxes[i] = blocks[i].bounds();
-        boxes[i].inflate(0.5 * margin_);
+        boxes_[i] = blocks[i].bounds();
+        boxes_[i].inflate(0.5 * margin_);
         blocks[i].x_at_refresh = blocks[i].body.x;
         blocks[i].q_at_refresh = blocks[i].body.q;
     }
-    for (auto [i, j] : overlapping_pairs(boxes)) {
+    overlapping_pairs(boxes_, order_, pairs_);
+    for (auto [i, j] : pairs_) {
         if (blocks[i].fixed && blocks[j].fixed) continue;
         for (auto [h, t] : {std::pair<int, int>{i, j}, std::pair<int, int>{j, i}}) {
             for (int f = 0; f < int(blocks[h].mesh.faces.size()); ++f) {
                 Aabb fb;
                 for (int n : blocks[h].mesh.faces[f]) fb.add(blocks[h].x[n]);
                 fb.inflate(0.5 * margin_);
-                if (!fb.overlaps(boxes[t])) continue;
+                if (!fb.overlaps(boxes_[t])) continue;
                 Candidate c{h, f, t, {}};
-                auto it = old.find({h, f, t});
-                if (it != old.end()) c.anchors = std::move(it->second);
+                auto it = std::lower_bound(previous_.begin(), previous_.end(), c,
+                                           [&](const Candidate& a, const Candidate& b) { return key(a) < key(b); });
+                if (it != previous_.end() && key(*it) == key(c)) c.anchors = std::move(it->anchors);
                 c.anchors.resize(blocks[h].hits[f].size());
                 candidates_.push_back(std::move(c));
             }
@@ -60,16 +63,16 @@ namespace {
 
 // geometry of a target block's sides for one step
 struct TargetSides {
-    std::vector<Vec3> normal;   // outward unit normals
-    std::vector<Vec3> centre;   // face centres
+    std::array<Vec3, 6> normal;   // outward unit normals
+    std::array<Vec3, 6> centre;   // face centres
 };
 
 TargetSides sides_of(const Block& b) {
     TargetSides s;
     for (int k = 0; k < 6; ++k) {
         Quad q = b.side_quad(k);
-        s.normal.push_back(quad_normal(q, Vec2::Zero()));
-        s.centre.push_back(0.25 * (q[0] + q[1] + q[2] + q[3]));
+        s.normal[k] = quad_normal(q, Vec2::Zero());
+        s.centre[k] = 0.25 * (q[0] + q[1] + q[2] + q[3]);
     }
     return s;
 }
@@ -92,8 +95,8 @@ ContactTotals ContactSet::apply(std::vector<Block>& blocks, double dt) {
     ContactTotals tot;
     int cached_h = -1, cached_t = -1;
     TargetSides sides;
-    std::vector<int> best_side(6);  // per target side: the hitting block's side most opposed to it
-    std::vector<char> target_ok(6); // per target side: it is the target for that side
+    std::array<int, 6> best_side{};   // per target side: the hitting block's side most opposed to it
+    std::array<char, 6> target_ok{};  // per target side: it is the target for that side
     double flush_tol = 0.0, closer_tol = 0.0;
     std::array<ParallelogramFrame, 6> frames;   // rigid parallelogram target sides: closed-form projection
     for (auto& c : candidates_) {

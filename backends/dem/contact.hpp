@@ -4,6 +4,7 @@
 /// on the target side it is closest to, with a penalty normal force and an elastic-then-Coulomb
 /// shear force from a stick anchor stored in the target face's natural coordinates.
 
+#include <utility>
 #include <vector>
 
 #include "block.hpp"
@@ -51,6 +52,11 @@ private:
     ContactLaw law_;
     double margin_ = 0.0;
     std::vector<Candidate> candidates_;
+    // buffers kept between refreshes so that a steady state allocates nothing
+    std::vector<Candidate> previous_;
+    std::vector<Aabb> boxes_;
+    std::vector<int> order_;
+    std::vector<std::pair<int, int>> pairs_;
 };
 
 /// true when side `target_side` of block t is the target of side `hit_side` of block h by the
