@@ -61,3 +61,20 @@ TEST_CASE("cairn validate rejects an unknown case or backend with exit code 2", 
     CHECK(r.exit_code == 2);
     CHECK_FALSE(fs::exists(dir / "v" / "summary.csv"));
 }
+
+TEST_CASE("cairn validate reports a variant the backend refuses and still writes the report", "[app][validate]") {
+    const fs::path dir = fresh_dir("validate_refused");
+    if (run_cairn("list", dir).out.find("mujoco") == std::string::npos) return;   // not built here
+    // MuJoCo's matched contact is calibrated for the elliptic cone only: a pyramid is refused at build
+    const auto r = run_cairn("validate --cases stability --backends dem,mujoco --set run.duration=0.1 "
+                             "--set backends.mujoco.cone=pyramidal -q --out " + (dir / "v").string(), dir);
+    INFO(r.err);
+    REQUIRE(r.exit_code == 0);
+    CHECK_THAT(r.out, Contains("mujoco-matched") && Contains("cannot represent"));
+    const std::string csv = read_file(dir / "v" / "summary.csv");
+    auto rows = rows_with(csv, "mujoco-matched", "run");
+    REQUIRE(rows.size() == 1);
+    CHECK_THAT(rows[0], Contains("cannot represent: mujoco:"));
+    CHECK(rows_with(csv, "dem-rigid", "period").size() == 1);   // the other runs went on
+    CHECK(fs::exists(dir / "v" / "index.html"));
+}
