@@ -116,7 +116,7 @@ CaseAnalysis analyse_rocking(const Scene& scene, const std::vector<Sample>& s, C
     }
     if (cross.size() > 2) {
         double th2 = 0.0;
-        const double t3 = cross.size() > 2 ? cross[2] : th.t.back();
+        const double t3 = cross[2];
         for (size_t i = 0; i < th.t.size(); ++i)
             if (th.t[i] > cross[1] && th.t[i] < t3) th2 = std::max(th2, std::abs(th.y[i]));
         out.metrics.push_back(info("amplitude after 2nd impact", "rad", th2,
