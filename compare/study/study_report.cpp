@@ -105,13 +105,16 @@ Table case_table(const std::vector<StudyPoint>& pts, const std::string& c) {
     return t;
 }
 
-/// the cheapest deformable point of case c (wall time) within tol on the event, per scheme ("" = none)
+/// the cheapest point of case c and one scheme within tol on the event: fewest element updates
+/// (deterministic; wall time only breaks ties), nullptr if none
 const StudyPoint* cheapest(const std::vector<StudyPoint>& pts, const std::string& c, const std::string& scheme,
                            double tol) {
     const StudyPoint* best = nullptr;
     for (const auto& p : pts)
         if (p.case_name == c && p.scheme == scheme && std::isfinite(p.event_error()) &&
-            std::abs(p.event_error()) <= tol && (!best || p.wall_seconds < best->wall_seconds))
+            std::abs(p.event_error()) <= tol &&
+            (!best || p.element_updates < best->element_updates ||
+             (p.element_updates == best->element_updates && p.wall_seconds < best->wall_seconds)))
             best = &p;
     return best;
 }
