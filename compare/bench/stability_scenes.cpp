@@ -69,19 +69,20 @@ Scene stack_scene(double ratio) {
     return s;
 }
 
-/// a stack holds when no block moves more than 5 % of the lower joint's static penetration
+/// a stack holds when no block moves more than the stack's static compression d1 + d2 (the oracle:
+/// placed at equilibrium, an exact penalty model does not move at all)
 Judgement stack_judge(const Scene& scene, const std::vector<Sample>& s) {
-    const double d1 = (cases::block_mass(scene, 0) + cases::block_mass(scene, 1)) * 9.81 / 3e9;
+    const int a = scene.block_index("A"), c = scene.block_index("C");
+    const double mc = cases::block_mass(scene, c), d1 = (cases::block_mass(scene, a) + mc) * 9.81 / 3e9;
+    const double bound = d1 + mc * 9.81 / 3e9;
     double worst = 0.0;
-    for (const auto& x : s)
-        for (size_t b = 0; b < x.blocks.size(); ++b) {
-            const int bi = b == 0 ? scene.block_index("A") : scene.block_index("C");
-            worst = std::max(worst, (x.blocks[b].position - scene.blocks[size_t(bi)].position).norm());
-        }
+    for (const auto& x : s) {
+        worst = std::max(worst, (x.blocks.at(size_t(cases::free_index(scene, a))).position - scene.blocks[size_t(a)].position).norm());
+        worst = std::max(worst, (x.blocks.at(size_t(cases::free_index(scene, c))).position - scene.blocks[size_t(c)].position).norm());
+    }
     char b[160];
-    std::snprintf(b, sizeof b, "largest block displacement %.3g m vs bound %.3g m (5 %% of the static %.3g m)", worst,
-                  0.05 * d1, d1);
-    return {worst <= 0.05 * d1, b};
+    std::snprintf(b, sizeof b, "largest block displacement %.3g m vs the static compression %.3g m", worst, bound);
+    return {worst <= bound, b};
 }
 
 }  // namespace
@@ -125,7 +126,7 @@ std::vector<StabilityConfig> stability_configs(const std::string& backend, const
         auto b = make("dem");
         b->build(probe, RunOptions{});
         const double crit = b->critical_step();
-        for (double f : {0.1, 0.2, 0.5, 1.0, 1.5, 2.0}) {
+        for (double f : {0.1, 0.2, 0.5, 1.0, 1.5, 2.0, 3.0, 5.0}) {   // 3, 5: where it really blows up
             Scene s = impact_scene();
             s.run.dt = f * crit;
             add("dt", g(f) + " crit", f, s, "rigid", [](const Scene& sc, const std::vector<Sample>& x) { return all_metrics(sc, x, true); });
