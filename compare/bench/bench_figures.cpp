@@ -133,7 +133,7 @@ std::vector<std::string> write_stability_figures(const std::string& dir, const s
            << "set xrange [-0.5:" << width - 0.5 << "]\nset yrange [" << params.size() - 0.5 << ":-0.5]\n"
            << "set title '" << b << ": green stable, red unstable, purple drifting, orange wrong, grey refused' noenhanced\n"
            << "set palette defined (0 '#2ca02c', 1 '#d62728', 2 '#9467bd', 3 '#ff9f1c', 4 '#b0b0b0')\n"
-           << "set cbrange [-0.5:4.5]\nset style fill solid 1.0 border rgb 'white'\nset ytics (";
+           << "set palette maxcolors 5\nset cbrange [-0.5:4.5]\nset style fill solid 1.0 border rgb 'white'\nset ytics (";
         for (size_t r = 0; r < params.size(); ++r) gp << (r ? ", " : "") << "'" << params[r] << "' " << r;
         gp << ") noenhanced\nset lmargin 16\n"
            << "plot '" << name << ".dat' using 1:2:(0.5):(0.5):3 with boxxyerror fc palette, '' using 1:2:4 "
