@@ -6,6 +6,9 @@
 #include <cstdlib>
 #include <filesystem>
 #include <map>
+#include <string>
+
+#include <unistd.h>
 
 #include "study/study_report.hpp"
 
@@ -19,7 +22,9 @@ const std::vector<StudyPoint>& study_points() {
     static const std::vector<StudyPoint> points = [] {
         const fs::path exe = fs::path(CAIRN_BINARY_DIR) / "app" / "cairn";
         if (!fs::exists(exe)) FAIL("build the cairn target first: " << exe);
-        const fs::path dir = fs::path(CAIRN_BINARY_DIR) / "test_scratch" / "study" / "inertia";
+        // one directory per process: ctest runs the test cases of this file in parallel
+        const fs::path dir = fs::path(CAIRN_BINARY_DIR) / "test_scratch" / "study" /
+                             ("inertia_" + std::to_string(getpid()));
         fs::remove_all(dir);
         fs::create_directories(dir);
         const std::string cmd = exe.string() + " study inertia --n 1,2 --repeats 1 -q --out '" + dir.string() +
