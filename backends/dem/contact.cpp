@@ -174,6 +174,8 @@ ContactTotals ContactSet::apply(std::vector<Block>& blocks, double dt) {
                 anchor.side = -1;
                 continue;
             }
+            const double depth_ratio = depth / std::min(hb.min_edge, tb.min_edge);
+            if (depth_ratio > tot.worst_depth) tot.worst_depth = depth_ratio, tot.worst_hit = c.hit_block, tot.worst_target = c.target_block;
             const double a = pts[k].area;
             // relative velocity of the hitting point against the target material point
             Vec3 vh = Vec3::Zero(), vt = Vec3::Zero();

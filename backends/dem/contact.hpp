@@ -32,6 +32,8 @@ struct ContactTotals {
     double stored = 0.0;      ///< elastic energy in the normal and shear springs, J
     double dissipated = 0.0;  ///< this step: slip and dashpots, J
     int active = 0;           ///< penetrating hitting points
+    double worst_depth = 0.0; ///< penetration as a fraction of the smaller block's shortest edge
+    int worst_hit = -1, worst_target = -1;  ///< the blocks of that deepest point
 };
 
 /// The contact state of a world.

@@ -50,9 +50,7 @@ public:
 
     StepStatus step() override {
         if (world_->step()) return StepStatus::ok;
-        std::ostringstream m;
-        m << "the state is no longer finite (NaN or infinity)";
-        failure_ = m.str();
+        failure_ = world_->failure();
         return StepStatus::unstable;
     }
 

@@ -1,6 +1,7 @@
 #include "world.hpp"
 
 #include <cmath>
+#include <sstream>
 
 namespace cairn::dem {
 
@@ -57,7 +58,24 @@ bool World::step() {
     t_ += dt_;
     compute_forces();
     kick(0.5 * dt_);
-    return state_finite();
+    if (!state_finite()) {
+        failure_ = "the state is no longer finite (NaN or infinity)";
+        return false;
+    }
+    // a penetration of a quarter of a block is no longer a contact: the blocks pass through
+    // each other (kn too soft for the loads, or the step too large)
+    if (last_contact_.worst_depth > 0.25) {
+        const Block& h = blocks_[last_contact_.worst_hit];
+        const Block& t = blocks_[last_contact_.worst_target];
+        std::ostringstream m;
+        m << "block " << h.name << " sank " << last_contact_.worst_depth * std::min(h.min_edge, t.min_edge)
+          << " m into block " << t.name << ", more than a quarter of the smaller block's shortest edge ("
+          << std::min(h.min_edge, t.min_edge) << " m): the contact stiffness kn is too soft for these loads, or "
+          << "the time step too large";
+        failure_ = m.str();
+        return false;
+    }
+    return true;
 }
 
 // stage: refresh the contact candidates every n steps, or sooner if the margin could be crossed
@@ -115,6 +133,7 @@ void World::compute_forces() {
         std::fill(b.f.begin(), b.f.end(), Vec3::Zero());
     }
     ContactTotals ct = contacts_.apply(blocks_, dt_);
+    last_contact_ = ct;
     energy_.contact = ct.stored;
     energy_.dissipated += ct.dissipated;
     active_ = ct.active;

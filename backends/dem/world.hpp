@@ -26,8 +26,11 @@ public:
     World(const Scene& scene, double margin);
     /// set the time step (s) and evaluate the forces at t = 0; call once before step()
     void start(double dt);
-    /// advance one step; false if the state is no longer finite
+    /// advance one step; false if the run can no longer be trusted (see failure())
     bool step();
+    /// why the last step failed: the state is not finite, or a block sank into another by more
+    /// than a quarter of the smaller block's shortest edge
+    const std::string& failure() const { return failure_; }
     /// simulated time, s
     double time() const { return t_; }
     const std::vector<Block>& blocks() const { return blocks_; }
@@ -62,6 +65,8 @@ private:
     ContactSet contacts_;
     EnergyAccounts energy_;
     int active_ = 0;
+    std::string failure_;
+    ContactTotals last_contact_;
     std::vector<Vec3> force_, torque_;          // rigid blocks: resultant of the current step
     std::vector<std::vector<Vec3>> accel_;      // deformable blocks: nodal accelerations
     std::vector<MaterialPoint> probes_, loads_;

@@ -104,3 +104,18 @@ TEST_CASE("the same scene twice gives identical samples", "[dem][determinism]") 
     };
     CHECK(run() == run());
 }
+
+TEST_CASE("a contact too soft for its load stops the run instead of letting a block sink through", "[dem][stability]") {
+    // kn = 1e5 N/m³ under a 1 m cube: the static penetration m g/(kn A) = 0.26 m is more than a
+    // quarter of the block; the engine must say so, not hand back a block falling through its base
+    Scene s = test::stone_scene();
+    s.contact.kn = s.contact.ks = 1e5;
+    test::add_box(s, "A", Vec3(1, 1, 1), Vec3(0, 0, 0.5), false);
+    test::add_box(s, "B", Vec3(1, 1, 1), Vec3(0, 0, -0.5), true);
+    auto b = test::build_dem(s);
+    bool stopped = !test::run_dem(*b, 2.0, [](const Sample&) {});
+    REQUIRE(stopped);
+    CHECK_THAT(b->failure(), Catch::Contains("block A sank") && Catch::Contains("into block B"));
+    // it stopped as the penetration passed 0.25 m, not after the block fell through
+    CHECK(b->sample().blocks[0].position.z() > 0.5 - 0.3);
+}
