@@ -50,6 +50,8 @@ struct ValidateOptions {
     std::vector<std::string> overrides;       ///< "key=value" applied to every run's scene
     int jobs = 2;                             ///< runs at a time
     bool quiet = false;                       ///< no progress lines
+    std::string study_dir;                    ///< inertia study to include (default: DIR/study if present)
+    std::string bench_dir;                    ///< bench results to include (default: DIR/bench if present)
 };
 
 /// `cairn validate`: the paper's cases on every backend against their analytic references

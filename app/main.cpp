@@ -59,6 +59,10 @@ int main(int argc, char** argv) {
         ->allow_extra_args(false);
     validate->add_option("--jobs,-j", val.jobs, "runs at a time (default 2)")->check(CLI::Range(1, 64));
     validate->add_flag("--quiet,-q", val.quiet, "no progress lines");
+    validate->add_option("--study", val.study_dir,
+                         "include the inertia study written there by `cairn study inertia` (default: DIR/study if present)");
+    validate->add_option("--bench", val.bench_dir,
+                         "include the bench results written there by `cairn bench` (default: DIR/bench if present)");
 
     BenchOptions bench;
     auto* bench_cmd = app.add_subcommand("bench", "speed against accuracy, stability, throughput (docs/bench.md)");

@@ -10,7 +10,9 @@
 #include "output/atomic_write.hpp"
 #include "registry.hpp"
 #include "report/figures.hpp"
+#include "bench/bench_report.hpp"
 #include "report/validation_report.hpp"
+#include "study/study_report.hpp"
 #include "scene/scene_io.hpp"
 #include "scenes.hpp"
 #include "validation/plan.hpp"
@@ -102,7 +104,19 @@ int validate_command(const ValidateOptions& options) {
     ctx.command = command_line(options);
     const auto figures = report::write_figures(plan.cases, dir.string());
     ctx.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    const auto doc = report::build_report(plan.cases, figures, ctx);
+    auto doc = report::build_report(plan.cases, figures, ctx);
+    // the inertia study and the benches, when their outputs sit beside the validation
+    const fs::path study_dir = options.study_dir.empty() ? dir / "study" : fs::path(options.study_dir);
+    const fs::path bench_dir = options.bench_dir.empty() ? dir / "bench" : fs::path(options.bench_dir);
+    const std::string study_prefix = fs::relative(study_dir, dir, ec).generic_string() + "/";
+    if (!study::add_inertia_report_section(doc, study_dir.string(), study_prefix) && !options.study_dir.empty())
+        std::cerr << "note: no inertia study in " << study_dir.string() << " (run cairn study inertia --out there)\n";
+    const bool has_bench = fs::exists(bench_dir / "trade.csv") || fs::exists(bench_dir / "stability.csv") ||
+                           fs::exists(bench_dir / "wall.csv");
+    if (has_bench)
+        report::append(doc, bench::bench_document(bench_dir.string()), fs::relative(bench_dir, dir, ec).generic_string() + "/");
+    else if (!options.bench_dir.empty())
+        std::cerr << "note: no bench results in " << bench_dir.string() << " (run cairn bench all --out there)\n";
     write_text_atomic((dir / "summary.csv").string(), report::summary_csv(plan.cases));
     write_text_atomic((dir / "report.md").string(), report::to_markdown(doc));
     write_text_atomic((dir / "index.html").string(), report::to_html(doc));

@@ -36,6 +36,13 @@ void Document::image(std::string path, std::string caption) {
     blocks.push_back(std::move(b));
 }
 
+void append(Document& into, const Document& from, const std::string& image_prefix) {
+    for (Block b : from.blocks) {
+        if (b.kind == Block::Kind::image) b.image = image_prefix + b.image;
+        into.blocks.push_back(std::move(b));
+    }
+}
+
 namespace {
 
 std::string md_cell(const std::string& s) {

@@ -34,6 +34,10 @@ struct Document {
     void image(std::string path, std::string caption);
 };
 
+/// append the blocks of `from` to `into` (not its title), image paths prefixed by `image_prefix`
+/// (the folder of `from` relative to `into`)
+void append(Document& into, const Document& from, const std::string& image_prefix);
+
 /// Markdown text of the document
 std::string to_markdown(const Document& d);
 /// a self-contained HTML page; cells starting with "MISS" or "pass" are coloured

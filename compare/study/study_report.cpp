@@ -1,4 +1,4 @@
-// the inertia study as markdown and HTML, and the files of `cairn study inertia`
+// the inertia study as a report section, and the files of `cairn study inertia`
 #include "study/study_report.hpp"
 
 #include <algorithm>
@@ -31,50 +31,18 @@ std::string mesh_name(const StudyPoint& p) {
            std::to_string(p.divisions[2]) + "]";
 }
 
-/// a table rendered in either format
-struct Table {
-    std::vector<std::string> head;
-    std::vector<std::vector<std::string>> rows;
-    std::string render(SectionFormat f) const {
-        std::ostringstream o;
-        if (f == SectionFormat::markdown) {
-            auto line = [&](const std::vector<std::string>& r) {
-                o << "|";
-                for (const auto& c : r) o << " " << c << " |";
-                o << "\n";
-            };
-            line(head);
-            o << "|";
-            for (size_t i = 0; i < head.size(); ++i) o << "---|";
-            o << "\n";
-            for (const auto& r : rows) line(r);
-        } else {
-            o << "<table>\n<tr>";
-            for (const auto& c : head) o << "<th>" << c << "</th>";
-            o << "</tr>\n";
-            for (const auto& r : rows) {
-                o << "<tr>";
-                for (const auto& c : r) o << "<td>" << c << "</td>";
-                o << "</tr>\n";
-            }
-            o << "</table>\n";
-        }
-        return o.str();
-    }
-};
-
-Table case_table(const std::vector<StudyPoint>& pts, const std::string& c) {
+report::Table case_table(const std::vector<StudyPoint>& pts, const std::string& c) {
     const bool rocking = c != "impact";
-    Table t;
-    t.head = {"scheme", "n", "mesh", "I_O ratio", "closed form", "engine I_O ratio"};
+    report::Table t;
+    t.header = {"scheme", "n", "mesh", "I_O ratio", "closed form", "engine I_O ratio"};
     if (rocking) {
         for (const char* h : {"first impact s", "error", "√(I_O) predicts", "ω ratio", "error vs Housner",
                               "vs rigid run", "Housner with scheme's I_O"})
-            t.head.push_back(h);
+            t.header.push_back(h);
     } else {
-        for (const char* h : {"bounce period s", "error"}) t.head.push_back(h);
+        for (const char* h : {"bounce period s", "error"}) t.header.push_back(h);
     }
-    for (const char* h : {"dt s", "wall s", "element updates", "status"}) t.head.push_back(h);
+    for (const char* h : {"dt s", "wall s", "element updates", "status"}) t.header.push_back(h);
     for (const auto& s : kSchemes)
         for (const auto& p : pts) {
             if (p.case_name != c || p.scheme != s) continue;
@@ -148,20 +116,10 @@ std::string recommendation(const std::vector<StudyPoint>& pts) {
     return o.str();
 }
 
-std::string inertia_section(const std::vector<StudyPoint>& pts, SectionFormat f,
-                            const std::vector<std::string>& figures, const std::string& prefix, double total_wall) {
-    const bool md = f == SectionFormat::markdown;
-    std::ostringstream o;
-    auto h = [&](int level, const std::string& s) {
-        if (md) o << std::string(size_t(level), '#') << " " << s << "\n\n";
-        else o << "<h" << level << ">" << s << "</h" << level << ">\n";
-    };
-    auto para = [&](const std::string& s) {
-        if (md) o << s << "\n\n";
-        else o << "<p>" << s << "</p>\n";
-    };
-    h(2, "Mesh inertia study (issue 6)");
-    para("How much each mass scheme of the dem engine's deformable blocks gets the rotational inertia wrong, "
+void add_inertia_section(report::Document& doc, const std::vector<StudyPoint>& pts,
+                         const std::vector<std::string>& figures, const std::string& prefix, double total_wall) {
+    doc.heading(2, "Mesh inertia study (issue 6)");
+    doc.paragraph("How much each mass scheme of the dem engine's deformable blocks gets the rotational inertia wrong, "
          "what that does to a rocking block's first impact and impact velocity ratio, and what it costs. "
          "Every point runs the shipped scene with block A deformable, the mesh and mass scheme set, and the "
          "duration cut to just past the event (first impact predicted from the scheme's inertia, + 0.1 s; "
@@ -176,7 +134,7 @@ std::string inertia_section(const std::vector<StudyPoint>& pts, SectionFormat f,
     for (const auto& p : pts) kn[p.case_name] = {p.kn, p.grid_spacing};
     std::string setup = "Contact stiffness kn = ks and hitting-point spacing per case: ";
     for (const auto& [c, v] : kn) setup += c + " kn = " + fmt("%.3g", v.first) + " N/m³, grid " + fmt("%g", v.second) + " m; ";
-    para(setup + "kn = 3e9 on the rocking cases because at the paper's 3e7 the pivot edge's own compliance moves "
+    doc.paragraph(setup + "kn = 3e9 on the rocking cases because at the paper's 3e7 the pivot edge's own compliance moves "
                  "the slender block's first impact by up to +38 % (physics.md), which would hide the mass schemes. "
                  "Errors are relative to Housner's exact t1 (exact inertia) and to DroppedBlock::bounce_period. "
                  "Wall time: median of the repeats, two runs at a time on 2 cores; element updates = steps × "
@@ -185,37 +143,27 @@ std::string inertia_section(const std::vector<StudyPoint>& pts, SectionFormat f,
         bool any = false;
         for (const auto& p : pts) any |= p.case_name == c;
         if (!any) continue;
-        h(3, c);
-        o << case_table(pts, c).render(f) << (md ? "\n" : "");
+        doc.heading(3, c);
+        doc.table(case_table(pts, c));
     }
     if (!figures.empty()) {
-        h(3, "Figures");
-        for (const auto& fig : figures) {
-            if (md) o << "![" << fig << "](" << prefix << fig << ")\n\n";
-            else o << "<p><img src=\"" << prefix << fig << "\" alt=\"" << fig << "\" style=\"max-width:100%\"></p>\n";
-        }
+        doc.heading(3, "Figures");
+        for (const auto& fig : figures) doc.image(prefix + fig, fig);
     }
-    h(3, "Recommendation");
-    const std::string rec = recommendation(pts);
-    if (md) o << rec << "\n";
-    else {
-        o << "<ul>\n";
-        std::istringstream in(rec);
-        for (std::string line; std::getline(in, line);) {
-            if (line.size() < 2) continue;
-            std::string s = line.substr(2), t;
-            bool bold = false;
-            for (size_t i = 0; i < s.size(); ++i) {
-                if (s.compare(i, 2, "**") == 0) { t += bold ? "</b>" : "<b>"; bold = !bold; ++i; }
-                else if (s[i] == '`') t += "";
-                else t += s[i];
-            }
-            o << "<li>" << t << "</li>\n";
+    doc.heading(3, "Recommendation");
+    std::vector<std::string> items;
+    std::istringstream in(recommendation(pts));
+    for (std::string line; std::getline(in, line);)
+        if (line.size() > 2) {
+            // the document has no inline markup: drop markdown's ** and `
+            std::string item;
+            for (size_t i = 2; i < line.size(); ++i)
+                if (line[i] != '*' && line[i] != '`') item += line[i];
+            items.push_back(item);
         }
-        o << "</ul>\n";
-    }
-    h(3, "Where the corrected scheme stops");
-    para("`corrected` keeps the lumped (diagonal) masses for deformation and gives the rigid rotation the exact "
+    doc.bullets(items);
+    doc.heading(3, "Where the corrected scheme stops");
+    doc.paragraph("`corrected` keeps the lumped (diagonal) masses for deformation and gives the rigid rotation the exact "
          "inertia tensor (a closed-form rank-3 correction, O(nodes) per step; docs/dem.md). Its limits: "
          "(1) it adds no gyroscopic term, so a block that is not inertially symmetric tumbling in 3-D does not "
          "conserve energy exactly (planar rocking is unaffected: the rotation stays about one principal axis); "
@@ -223,18 +171,20 @@ std::string inertia_section(const std::vector<StudyPoint>& pts, SectionFormat f,
          "(3) the target inertia is rotated with the nodes' best-fit rotation, exact for rigid motion and an "
          "approximation once the block deforms a lot; (4) its stable step is the lumped mass's, the deformation "
          "modes being unchanged.");
-    if (std::isfinite(total_wall)) para("Total study wall time: " + fmt("%.1f", total_wall) + " s.");
-    return o.str();
+    if (std::isfinite(total_wall)) doc.paragraph("Total study wall time: " + fmt("%.1f", total_wall) + " s.");
 }
 
-std::string inertia_report_section(const std::string& dir, SectionFormat f, const std::string& prefix) {
+bool add_inertia_report_section(report::Document& doc, const std::string& dir, const std::string& prefix) {
     namespace fs = std::filesystem;
-    const auto pts = read_inertia_csv((fs::path(dir) / "inertia.csv").string());
+    const fs::path csv = fs::path(dir) / "inertia.csv";
+    if (!fs::exists(csv)) return false;
+    const auto pts = read_inertia_csv(csv.string());
     std::vector<std::string> figures;
     for (const char* name : {"inertia_io_ratio", "inertia_error_n", "inertia_error_cost"})
         if (fs::exists(fs::path(dir) / "figures" / (std::string(name) + ".png")))
             figures.push_back("figures/" + std::string(name) + ".png");
-    return inertia_section(pts, f, figures, prefix);
+    add_inertia_section(doc, pts, figures, prefix);
+    return true;
 }
 
 void write_inertia_study(const std::string& dir, const std::vector<StudyPoint>& pts, double total_wall) {
@@ -245,16 +195,12 @@ void write_inertia_study(const std::string& dir, const std::vector<StudyPoint>& 
     // the ratio figure first: it explains the others
     std::rotate(figures.begin(), std::find(figures.begin(), figures.end(), "figures/inertia_io_ratio.png"),
                 figures.end());
-    std::string md = "# cairn: mesh inertia study\n\n" + inertia_section(pts, SectionFormat::markdown, figures, "", total_wall);
-    if (!note.empty()) md += "Figures: " + note + "\n";
-    write_text_atomic((fs::path(dir) / "inertia.md").string(), md);
-    std::string html = "<!DOCTYPE html>\n<html><head><meta charset=\"utf-8\"><title>cairn: mesh inertia study</title>"
-                       "<style>body{font-family:sans-serif;max-width:1500px;margin:auto}table{border-collapse:collapse;"
-                       "font-size:90%}td,th{border:1px solid #ccc;padding:2px 6px;text-align:right}</style></head><body>\n"
-                       "<h1>cairn: mesh inertia study</h1>\n" +
-                       inertia_section(pts, SectionFormat::html, figures, "", total_wall) +
-                       (note.empty() ? "" : "<p>Figures: " + note + "</p>\n") + "</body></html>\n";
-    write_text_atomic((fs::path(dir) / "inertia.html").string(), html);
+    report::Document doc;
+    doc.title = "cairn: mesh inertia study";
+    add_inertia_section(doc, pts, figures, "", total_wall);
+    if (!note.empty()) doc.paragraph("Figures: " + note);
+    write_text_atomic((fs::path(dir) / "inertia.md").string(), report::to_markdown(doc));
+    write_text_atomic((fs::path(dir) / "inertia.html").string(), report::to_html(doc));
 }
 
 }  // namespace cairn::study

@@ -5,12 +5,10 @@
 #include <string>
 #include <vector>
 
+#include "report/document.hpp"
 #include "study/inertia_study.hpp"
 
 namespace cairn::study {
-
-/// markdown or HTML
-enum class SectionFormat { markdown, html };
 
 /// write the points as CSV (one row per point, header first)
 void write_inertia_csv(const std::string& path, const std::vector<StudyPoint>& points);
@@ -25,17 +23,16 @@ std::vector<std::string> write_inertia_figures(const std::string& dir, const std
 /// the plain recommendation drawn from the points (cheapest point within 1 % per rocking case, …)
 std::string recommendation(const std::vector<StudyPoint>& points);
 
-/// the study as a report section: what was run, the tables, the figures (paths prefixed by
+/// add the study to a report: what was run, the tables, the figures (paths prefixed by
 /// `figure_prefix`), the recommendation and the corrected scheme's limits
-std::string inertia_section(const std::vector<StudyPoint>& points, SectionFormat format,
-                            const std::vector<std::string>& figures, const std::string& figure_prefix = "",
-                            double total_wall_seconds = NAN);
+void add_inertia_section(report::Document& doc, const std::vector<StudyPoint>& points,
+                         const std::vector<std::string>& figures, const std::string& figure_prefix = "",
+                         double total_wall_seconds = NAN);
 
-/// the section from a study directory written by `cairn study inertia` (reads DIR/inertia.csv and
-/// lists DIR/figures/inertia_*.png); figure paths are prefixed by `figure_prefix` (the study dir
-/// relative to the including document). For the validation report.
-std::string inertia_report_section(const std::string& study_dir, SectionFormat format,
-                                   const std::string& figure_prefix);
+/// add the section of a study directory written by `cairn study inertia` (DIR/inertia.csv and
+/// DIR/figures/inertia_*.png), figure paths prefixed by `figure_prefix` (the study dir relative to
+/// the including document); false, and nothing added, when DIR has no inertia.csv
+bool add_inertia_report_section(report::Document& doc, const std::string& study_dir, const std::string& figure_prefix);
 
 /// write DIR/inertia.csv, the figures, DIR/inertia.md and DIR/inertia.html
 void write_inertia_study(const std::string& dir, const std::vector<StudyPoint>& points, double total_wall_seconds);
