@@ -1,5 +1,7 @@
 #include "bench/stability.hpp"
 
+#include "report/text.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <sstream>
@@ -110,10 +112,10 @@ std::string stability_csv(const std::vector<StabilityPoint>& points) {
     std::ostringstream o;
     o << kHeader << "\n";
     for (const auto& p : points)
-        o << p.backend << "," << csv_field(p.parameter) << "," << csv_number(p.value) << "," << csv_field(p.value_text)
-          << "," << to_string(p.cls) << "," << csv_number(p.max_balance_error) << "," << (p.energy_booked ? 1 : 0)
-          << "," << csv_number(p.penetration) << "," << csv_number(p.dt) << "," << p.steps << ","
-          << csv_number(p.wall_seconds) << "," << csv_field(p.check) << "," << csv_field(p.message) << "\n";
+        o << p.backend << "," << report::csv_field(p.parameter) << "," << report::number_text(p.value) << "," << report::csv_field(p.value_text)
+          << "," << to_string(p.cls) << "," << report::number_text(p.max_balance_error) << "," << (p.energy_booked ? 1 : 0)
+          << "," << report::number_text(p.penetration) << "," << report::number_text(p.dt) << "," << p.steps << ","
+          << report::number_text(p.wall_seconds) << "," << report::csv_field(p.check) << "," << report::csv_field(p.message) << "\n";
     return o.str();
 }
 
@@ -123,7 +125,7 @@ std::vector<StabilityPoint> parse_stability_csv(const std::string& text) {
     std::string line;
     std::getline(in, line);
     while (std::getline(in, line)) {
-        const auto f = split_csv(line);
+        const auto f = report::split_csv_line(line);
         if (f.size() != 13) continue;
         StabilityPoint p;
         p.backend = f[0];

@@ -1,5 +1,7 @@
 #include "bench/trade_point.hpp"
 
+#include "report/text.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -54,40 +56,6 @@ std::optional<size_t> most_accurate(const std::vector<TradePoint>& points, const
     return best;
 }
 
-std::string csv_number(double v) {
-    if (!std::isfinite(v)) return "";
-    char b[40];
-    std::snprintf(b, sizeof b, "%.6g", v);
-    return b;
-}
-
-std::string csv_field(const std::string& s) {
-    if (s.find_first_of(",\"\n") == std::string::npos) return s;
-    std::string q = "\"";
-    for (char c : s) q += c == '"' ? std::string("\"\"") : std::string(1, c == '\n' ? ' ' : c);
-    return q + "\"";
-}
-
-std::vector<std::string> split_csv(const std::string& line) {
-    std::vector<std::string> f(1);
-    bool quoted = false;
-    for (size_t i = 0; i < line.size(); ++i) {
-        const char c = line[i];
-        if (quoted) {
-            if (c == '"' && i + 1 < line.size() && line[i + 1] == '"') { f.back() += '"'; ++i; }
-            else if (c == '"') quoted = false;
-            else f.back() += c;
-        } else if (c == '"') {
-            quoted = true;
-        } else if (c == ',') {
-            f.emplace_back();
-        } else if (c != '\r') {
-            f.back() += c;
-        }
-    }
-    return f;
-}
-
 namespace {
 
 const char* kColumns[] = {"key", "case", "backend", "variant", "knobs", "kn", "dt", "steps", "sim_seconds",
@@ -111,10 +79,10 @@ std::string trade_csv_header() {
 
 std::string trade_csv_row(const TradePoint& p) {
     std::ostringstream o;
-    o << csv_field(p.key()) << "," << p.case_name << "," << p.backend << "," << p.variant << ","
-      << csv_field(p.knobs) << "," << csv_number(p.kn) << "," << csv_number(p.dt) << "," << p.steps << ","
-      << csv_number(p.sim_seconds) << "," << csv_number(p.wall_seconds) << "," << csv_number(p.error) << ","
-      << csv_field(p.error_metric) << "," << csv_field(p.status);
+    o << report::csv_field(p.key()) << "," << p.case_name << "," << p.backend << "," << p.variant << ","
+      << report::csv_field(p.knobs) << "," << report::number_text(p.kn) << "," << report::number_text(p.dt) << "," << p.steps << ","
+      << report::number_text(p.sim_seconds) << "," << report::number_text(p.wall_seconds) << "," << report::number_text(p.error) << ","
+      << report::csv_field(p.error_metric) << "," << report::csv_field(p.status);
     return o.str();
 }
 
@@ -125,7 +93,7 @@ std::vector<TradePoint> parse_trade_csv(const std::string& text) {
     bool header = true;
     while (std::getline(in, line)) {
         if (header) { header = false; continue; }
-        const auto f = split_csv(line);
+        const auto f = report::split_csv_line(line);
         if (f.size() != kNumColumns || f[12].empty()) continue;   // a row cut short by an interruption
         TradePoint p;
         p.case_name = f[1];

@@ -51,11 +51,4 @@ std::vector<TradePoint> parse_trade_csv(const std::string& text);
 /// read DIR/trade.csv if it exists (empty otherwise)
 std::vector<TradePoint> read_trade_csv(const std::string& path);
 
-/// split one CSV line; fields may be quoted ("" inside for a quote)
-std::vector<std::string> split_csv(const std::string& line);
-/// a field quoted when it holds a comma or a quote
-std::string csv_field(const std::string& s);
-/// %.6g of a number, "" for NaN
-std::string csv_number(double v);
-
 }  // namespace cairn::bench

@@ -1,4 +1,5 @@
 #include "bench/wall_bench.hpp"
+#include "report/text.hpp"
 
 #include <chrono>
 #include <cmath>
@@ -123,9 +124,9 @@ std::string wall_csv(const std::vector<WallResult>& rows) {
     std::ostringstream o;
     o << "setup,backend,contact,kn,dt,blocks,steps,steps_per_second,ratio_to_bullet,top_settlement,status\n";
     for (const auto& r : rows)
-        o << csv_field(r.setup) << "," << r.backend << "," << csv_field(r.contact) << "," << csv_number(r.kn) << ","
-          << csv_number(r.dt) << "," << r.blocks << "," << r.steps << "," << csv_number(r.steps_per_second) << ","
-          << csv_number(r.ratio_to_bullet) << "," << csv_number(r.top_settlement) << "," << csv_field(r.status) << "\n";
+        o << report::csv_field(r.setup) << "," << r.backend << "," << report::csv_field(r.contact) << "," << report::number_text(r.kn) << ","
+          << report::number_text(r.dt) << "," << r.blocks << "," << r.steps << "," << report::number_text(r.steps_per_second) << ","
+          << report::number_text(r.ratio_to_bullet) << "," << report::number_text(r.top_settlement) << "," << report::csv_field(r.status) << "\n";
     return o.str();
 }
 
@@ -136,7 +137,7 @@ std::vector<WallResult> parse_wall_csv(const std::string& text) {
     std::getline(in, line);
     auto num = [](const std::string& s) { return s.empty() ? NAN : std::strtod(s.c_str(), nullptr); };
     while (std::getline(in, line)) {
-        const auto f = split_csv(line);
+        const auto f = report::split_csv_line(line);
         if (f.size() != 11) continue;
         out.push_back({f[0], f[1], f[2], num(f[3]), num(f[4]), std::atoi(f[5].c_str()), std::atoi(f[6].c_str()),
                        num(f[7]), num(f[8]), num(f[9]), f[10]});

@@ -87,4 +87,24 @@ metrics::Series angle_series(const std::vector<Sample>& s, int f, const Vec3& ax
     return out;
 }
 
+Vec3 rocking_axis(const Scene& scene) {
+    const auto& v = scene.reference->values;
+    auto get = [&](const char* k) { auto it = v.find(k); return it == v.end() ? 0.0 : it->second; };
+    const Vec3 a(get("axis_x"), get("axis_y"), get("axis_z"));
+    return a.norm() > 0.0 ? a.normalized() : Vec3::UnitY();
+}
+
+oracle::HousnerBlock housner_block(const Scene& scene) {
+    const BlockDef& d = scene.blocks.at(size_t(scene.reference->block));
+    const Vec3 across = rocking_axis(scene).cross(Vec3::UnitZ()).normalized();
+    double lo = 1e300, hi = -1e300, zlo = 1e300, zhi = -1e300;
+    for (const auto& c : d.corners) {
+        lo = std::min(lo, c.dot(across));
+        hi = std::max(hi, c.dot(across));
+        zlo = std::min(zlo, c.z());
+        zhi = std::max(zhi, c.z());
+    }
+    return {0.5 * (hi - lo), 0.5 * (zhi - zlo), gravity(scene)};
+}
+
 }  // namespace cairn::cases

@@ -4,6 +4,7 @@
 #include <string>
 #include <vector>
 
+#include "analytic/oracles.hpp"
 #include "backend/backend.hpp"
 #include "metrics/signal.hpp"
 
@@ -24,6 +25,12 @@ int free_index(const Scene& scene, int block);
 int probe_index(const Scene& scene, const std::string& name);
 /// contact dashpot of the scene's damping rule for a spring K on mass m (ratio: 2ζ√(Km); time: γK), N·s/m
 double dashpot(const Scene& scene, double stiffness, double mass);
+
+/// the rocking axis of a housner reference (its axis_x/y/z values; default y), unit, world
+Vec3 rocking_axis(const Scene& scene);
+/// Housner's block of the reference block: half-width across the rocking axis and half-height,
+/// from its corners in the block frame
+oracle::HousnerBlock housner_block(const Scene& scene);
 
 /// component c (0 x, 1 y, 2 z) of probe p, minus its value at t = 0 when `relative`
 metrics::Series probe_series(const std::vector<Sample>& s, int p, int c, bool relative);

@@ -11,28 +11,6 @@ namespace cairn::cases {
 
 namespace {
 
-/// the rocking axis of the reference (unit, world)
-Vec3 rocking_axis(const Scene& scene) {
-    const auto& v = scene.reference->values;
-    auto get = [&](const char* k) { auto it = v.find(k); return it == v.end() ? 0.0 : it->second; };
-    Vec3 a(get("axis_x"), get("axis_y"), get("axis_z"));
-    return a.norm() > 0.0 ? a.normalized() : Vec3::UnitY();
-}
-
-/// Housner's block from the reference block's extent across the axis and along z (block frame)
-oracle::HousnerBlock housner(const Scene& scene) {
-    const BlockDef& d = scene.blocks.at(scene.reference->block);
-    const Vec3 across = rocking_axis(scene).cross(Vec3::UnitZ()).normalized();
-    double lo = 1e300, hi = -1e300, zlo = 1e300, zhi = -1e300;
-    for (const auto& c : d.corners) {
-        lo = std::min(lo, c.dot(across));
-        hi = std::max(hi, c.dot(across));
-        zlo = std::min(zlo, c.z());
-        zhi = std::max(zhi, c.z());
-    }
-    return {0.5 * (hi - lo), 0.5 * (zhi - zlo), gravity(scene)};
-}
-
 /// the impact velocity ratio that applies: Housner's for rigid contact, 1 for undamped penalty
 /// contact (no loss), none (NaN) for damped penalty contact
 double ratio_for(const Scene& scene, ContactKind contact, const oracle::HousnerBlock& hb) {
@@ -43,7 +21,7 @@ double ratio_for(const Scene& scene, ContactKind contact, const oracle::HousnerB
 }  // namespace
 
 std::vector<double> rocking_curve(const Scene& scene, ContactKind contact, const std::vector<double>& t) {
-    const auto hb = housner(scene);
+    const auto hb = housner_block(scene);
     double r = ratio_for(scene, contact, hb);
     // damped penalty contact: no closed form; the curve shown is Housner's rigid impact
     if (!std::isfinite(r)) r = hb.velocity_ratio();
@@ -52,7 +30,7 @@ std::vector<double> rocking_curve(const Scene& scene, ContactKind contact, const
 
 CaseAnalysis analyse_rocking(const Scene& scene, const std::vector<Sample>& s, ContactKind contact) {
     using namespace metrics;
-    const auto hb = housner(scene);
+    const auto hb = housner_block(scene);
     const double th0 = scene.reference->values.at("theta0"), a = hb.alpha();
     const double r_ref = ratio_for(scene, contact, hb);
     const bool has_r = std::isfinite(r_ref);

@@ -4,6 +4,7 @@
 #include <map>
 #include <set>
 
+#include "report/text.hpp"
 #include "report/validation_report.hpp"
 
 namespace cairn::report {
@@ -13,25 +14,6 @@ using validation::CaseRun;
 using validation::Outcome;
 
 namespace {
-
-std::string num(double v) {
-    if (!std::isfinite(v)) return "";
-    char b[32];
-    std::snprintf(b, sizeof b, "%.6g", v);
-    return b;
-}
-
-std::string pct(double v) {
-    char b[32];
-    std::snprintf(b, sizeof b, "%+.3f %%", 100.0 * v);
-    return b;
-}
-
-std::string fixed(double v, int digits) {
-    char b[32];
-    std::snprintf(b, sizeof b, "%.*f", digits, v);
-    return b;
-}
 
 std::vector<std::string> conventions() {
     return {
@@ -64,7 +46,7 @@ std::vector<std::string> conventions() {
 std::string reference_text(const Scene& s) {
     if (!s.reference) return "none";
     std::string t = s.reference->kind;
-    for (const auto& [k, v] : s.reference->values) t += ", " + k + " = " + num(v);
+    for (const auto& [k, v] : s.reference->values) t += ", " + k + " = " + number_text(v);
     char b[200];
     std::snprintf(b, sizeof b, "; kn = %g N/m³, μ = %g, contact damping %s %g, mass damping α = %g 1/s, duration %g s",
                   s.contact.kn, s.contact.friction, to_string(s.contact.damping_rule), s.contact.damping,
@@ -95,7 +77,7 @@ Document build_report(const std::vector<CaseResult>& cases, const FigureSet& fig
         }
     d.paragraph(std::to_string(cases.size()) + " cases, " + std::to_string(runs) + " runs (" + std::to_string(passed) +
                 " within every tolerance, " + std::to_string(missed) + " with misses, " + std::to_string(other) +
-                " not judged) in " + fixed(ctx.wall_seconds, 1) + " s wall on " + std::to_string(ctx.jobs) +
+                " not judged) in " + fixed_text(ctx.wall_seconds, 1) + " s wall on " + std::to_string(ctx.jobs) +
                 " threads. Command: " + ctx.command);
     if (!figures.note.empty()) d.paragraph("Figures: " + figures.note);
 
@@ -105,7 +87,7 @@ Document build_report(const std::vector<CaseResult>& cases, const FigureSet& fig
         for (const auto& r : c.runs) {
             const std::string worst_text = worst_metric_text(r);
             v.rows.push_back({c.name, r.variant.name, run_verdict(r), worst_text,
-                              r.outcome == Outcome::refused ? "" : fixed(r.wall_seconds, 2)});
+                              r.outcome == Outcome::refused ? "" : fixed_text(r.wall_seconds, 2)});
         }
     d.table(v);
 
@@ -130,16 +112,16 @@ Document build_report(const std::vector<CaseResult>& cases, const FigureSet& fig
             }
             for (const auto* list : {&r.analysis.metrics, &r.diffs})
                 for (const auto& x : *list)
-                    m.rows.push_back({r.variant.name, x.name, x.measured ? num(x.value) + (x.unit.empty() ? "" : " " + x.unit) : "not measured",
-                                      x.has_reference ? num(x.reference) : "",
-                                      x.has_reference && x.measured && x.reference != 0.0 ? pct(x.relative_error()) : "",
+                    m.rows.push_back({r.variant.name, x.name, x.measured ? number_text(x.value) + (x.unit.empty() ? "" : " " + x.unit) : "not measured",
+                                      x.has_reference ? number_text(x.reference) : "",
+                                      x.has_reference && x.measured && x.reference != 0.0 ? percent_text(x.relative_error()) : "",
                                       x.tolerance_text(), x.verdict(), x.basis});
         }
         d.table(m);
         Table w{{"variant", "status", "dt (s)", "steps", "wall s", "outputs"}, {}};
         for (const auto& r : c.runs)
-            w.rows.push_back({r.variant.name, validation::to_string(r.outcome), num(r.dt), std::to_string(r.steps),
-                              fixed(r.wall_seconds, 3), r.outcome == Outcome::refused ? "" : r.out_dir});
+            w.rows.push_back({r.variant.name, validation::to_string(r.outcome), number_text(r.dt), std::to_string(r.steps),
+                              fixed_text(r.wall_seconds, 3), r.outcome == Outcome::refused ? "" : r.out_dir});
         d.table(w);
     }
 

@@ -1,5 +1,7 @@
 #include "report/validation_report.hpp"
 
+#include "report/text.hpp"
+
 #include <cmath>
 #include <cstdio>
 #include <sstream>
@@ -11,26 +13,6 @@ using validation::CaseRun;
 using validation::Outcome;
 
 namespace {
-
-std::string num(double v) {
-    if (!std::isfinite(v)) return "";
-    char b[32];
-    std::snprintf(b, sizeof b, "%.6g", v);
-    return b;
-}
-
-std::string pct(double v) {
-    char b[32];
-    std::snprintf(b, sizeof b, "%+.3f %%", 100.0 * v);
-    return b;
-}
-
-std::string csv(const std::string& s) {
-    if (s.find_first_of(",\"\n") == std::string::npos) return s;
-    std::string o = "\"";
-    for (char c : s) o += c == '"' ? std::string("\"\"") : std::string(1, c);
-    return o + "\"";
-}
 
 /// the metric that misses by the most (relative to its tolerance), or the first checked one
 const metrics::Metric* worst(const CaseRun& r) {
@@ -50,9 +32,9 @@ const metrics::Metric* worst(const CaseRun& r) {
 std::string metric_brief(const metrics::Metric& m) {
     if (!m.measured) return m.name + ": not measured (" + m.basis + ")";
     if (m.check == metrics::Check::relative)
-        return m.name + " " + num(m.value) + " " + m.unit + " vs " + num(m.reference) + " (" + pct(m.relative_error()) +
+        return m.name + " " + number_text(m.value) + " " + m.unit + " vs " + number_text(m.reference) + " (" + percent_text(m.relative_error()) +
                ", tol " + m.tolerance_text() + ")";
-    return m.name + " " + num(m.value) + " " + m.unit + " (" + m.tolerance_text() + " " + num(m.reference) + ")";
+    return m.name + " " + number_text(m.value) + " " + m.unit + " (" + m.tolerance_text() + " " + number_text(m.reference) + ")";
 }
 
 }  // namespace
@@ -87,18 +69,18 @@ std::string summary_csv(const std::vector<CaseResult>& cases) {
         for (const auto& r : c.runs) {
             const std::string head = c.name + "," + r.variant.name + "," + r.variant.backend + "," +
                                      r.variant.contact_label() + "," + r.variant.model + ",";
-            const std::string tail = "," + num(r.wall_seconds) + "," + csv(validation::to_string(r.outcome)) + "\n";
+            const std::string tail = "," + number_text(r.wall_seconds) + "," + report::csv_field(validation::to_string(r.outcome)) + "\n";
             if (!r.analysed) {
                 std::string pass = r.outcome == Outcome::refused ? "cannot represent: " + r.message
                                                                  : std::string(validation::to_string(r.outcome)) + ": " + r.message;
-                o << head << "run,,,,,," << csv(pass) << tail;
+                o << head << "run,,,,,," << report::csv_field(pass) << tail;
                 continue;
             }
             auto row = [&](const metrics::Metric& m) {
-                o << head << csv(m.name) << "," << csv(m.unit) << "," << (m.measured ? num(m.value) : "") << ","
-                  << (m.has_reference ? num(m.reference) : "") << ","
-                  << (m.has_reference && m.measured && m.reference != 0.0 ? num(m.relative_error()) : "") << ","
-                  << csv(m.tolerance_text()) << "," << m.verdict() << tail;
+                o << head << report::csv_field(m.name) << "," << report::csv_field(m.unit) << "," << (m.measured ? number_text(m.value) : "") << ","
+                  << (m.has_reference ? number_text(m.reference) : "") << ","
+                  << (m.has_reference && m.measured && m.reference != 0.0 ? number_text(m.relative_error()) : "") << ","
+                  << report::csv_field(m.tolerance_text()) << "," << m.verdict() << tail;
             };
             for (const auto& m : r.analysis.metrics) row(m);
             for (const auto& m : r.diffs) row(m);

@@ -30,29 +30,8 @@ MassScheme scheme_of(const std::string& s) {
     throw Error("inertia study: unknown mass scheme " + s);
 }
 
-/// the rocking axis of the scene's reference (world = block frame here: A is turned about it)
-Vec3 axis_of(const Scene& scene) {
-    const auto& v = scene.reference->values;
-    auto get = [&](const char* k) { auto it = v.find(k); return it == v.end() ? 0.0 : it->second; };
-    const Vec3 a(get("axis_x"), get("axis_y"), get("axis_z"));
-    return a.norm() > 0.0 ? a.normalized() : Vec3::UnitY();
-}
-
 bool is_rocking(const Scene& scene) { return scene.reference && scene.reference->kind == "housner"; }
 
-/// Housner's block of the reference block (half-width across the axis, half-height)
-oracle::HousnerBlock housner_of(const Scene& scene) {
-    const BlockDef& d = scene.blocks.at(size_t(scene.reference->block));
-    const Vec3 across = axis_of(scene).cross(Vec3::UnitZ()).normalized();
-    double lo = 1e300, hi = -1e300, zlo = 1e300, zhi = -1e300;
-    for (const auto& c : d.corners) {
-        lo = std::min(lo, c.dot(across));
-        hi = std::max(hi, c.dot(across));
-        zlo = std::min(zlo, c.z());
-        zhi = std::max(zhi, c.z());
-    }
-    return {0.5 * (hi - lo), 0.5 * (zhi - zlo), cases::gravity(scene)};
-}
 
 std::array<int, 3> divisions_of(const StudyCase& c, int n) {
     return c.in_plane ? std::array<int, 3>{n, 1, n} : std::array<int, 3>{n, n, n};
@@ -102,7 +81,7 @@ Scene point_scene(const StudyCase& c, const std::string& scheme, int n) {
     if (is_rocking(scene)) {
         // a rigid block with the scheme's I_O reaches θ = 0 at t1·√(I_O/I_O,exact); 3 % margin
         const double ratio = scheme == "rigid" ? 1.0 : inertia_point(c, scheme, n, {}).io_ratio;
-        const double t1 = housner_of(scene).first_impact(scene.reference->values.at("theta0"));
+        const double t1 = cases::housner_block(scene).first_impact(scene.reference->values.at("theta0"));
         scene.run.duration = 1.03 * t1 * std::sqrt(ratio) + c.after;
         scene.run.output_interval = 2e-4;
     } else {
@@ -124,7 +103,7 @@ StudyPoint inertia_point(const StudyCase& c, const std::string& scheme, int n, c
     p.grid_spacing = scene.contact.grid_spacing;
     const BlockDef& b = scene.blocks.at(size_t(scene.reference->block));
     const double rho = scene.materials.at(size_t(b.material)).density;
-    const Vec3 axis = is_rocking(scene) ? axis_of(scene) : Vec3::UnitY();
+    const Vec3 axis = is_rocking(scene) ? cases::rocking_axis(scene) : Vec3::UnitY();
     const auto mi = mesh_inertia(b.corners, rho, p.divisions, scheme == "rigid" ? MassScheme::corrected : scheme_of(scheme));
     const Vec3 edge = rocking_edge_point(b.corners, axis);
     const double io_exact = axis.dot(mi.exact * axis) + mi.mass * ((mi.centre - edge).squaredNorm() -
@@ -144,7 +123,7 @@ StudyPoint inertia_point(const StudyCase& c, const std::string& scheme, int n, c
         p.io_engine_ratio = inertia_about_line(e, axis, edge) / io_exact;
     }
     if (is_rocking(scene)) {
-        const auto hb = housner_of(scene);
+        const auto hb = cases::housner_block(scene);
         p.t_housner = hb.first_impact(scene.reference->values.at("theta0"));
         p.t_predicted = p.t_housner * std::sqrt(p.io_ratio);
         p.omega_ratio_housner = hb.velocity_ratio();
@@ -222,7 +201,7 @@ std::vector<StudyPoint> run_study(const std::vector<StudyCase>& cases, const Stu
             const int f = cases::free_index(scene, scene.reference->block);
             if (is_rocking(scene)) {
                 // θ fitted over 30 ms before; after: skip 5 ms of contact transient, fit 30 ms
-                const auto imp = first_rocking_impact(result.samples, f, axis_of(scene), 0.005, 0.03);
+                const auto imp = first_rocking_impact(result.samples, f, cases::rocking_axis(scene), 0.005, 0.03);
                 if (imp.found) {
                     p.t_impact = imp.time;
                     p.omega_ratio = imp.ratio;

@@ -8,6 +8,8 @@
 #include "output/atomic_write.hpp"
 #include "study/study_report.hpp"
 
+#include "report/text.hpp"
+
 namespace cairn::study {
 
 namespace {
@@ -16,34 +18,6 @@ const char* kHeader =
     "case,scheme,n,nx,ny,nz,kn,grid_spacing,mass,ic_ratio,io_ratio,io_closed_form,io_engine_ratio,"
     "t_impact,t_housner,t_predicted,impact_error,omega_ratio,omega_ratio_housner,omega_ratio_scheme,"
     "ratio_error,bounce,bounce_reference,bounce_error,duration,dt,steps,element_updates,wall_seconds,status";
-
-std::string num(double v) {
-    if (!std::isfinite(v)) return "";
-    char b[40];
-    std::snprintf(b, sizeof b, "%.10g", v);
-    return b;
-}
-
-/// split one CSV line; a field may be quoted ("" inside for a quote)
-std::vector<std::string> split(const std::string& line) {
-    std::vector<std::string> f(1);
-    bool quoted = false;
-    for (size_t i = 0; i < line.size(); ++i) {
-        const char c = line[i];
-        if (quoted) {
-            if (c == '"' && i + 1 < line.size() && line[i + 1] == '"') { f.back() += '"'; ++i; }
-            else if (c == '"') quoted = false;
-            else f.back() += c;
-        } else if (c == '"') {
-            quoted = true;
-        } else if (c == ',') {
-            f.emplace_back();
-        } else {
-            f.back() += c;
-        }
-    }
-    return f;
-}
 
 double to_num(const std::string& s) { return s.empty() ? NAN : std::stod(s); }
 
@@ -57,14 +31,14 @@ void write_inertia_csv(const std::string& path, const std::vector<StudyPoint>& p
             std::string status;
             for (char c : p.status) status += c == '"' ? std::string("\"\"") : std::string(1, c);
             o << p.case_name << "," << p.scheme << "," << p.n << "," << p.divisions[0] << "," << p.divisions[1]
-              << "," << p.divisions[2] << "," << num(p.kn) << "," << num(p.grid_spacing) << "," << num(p.mass)
-              << "," << num(p.ic_ratio) << "," << num(p.io_ratio) << "," << num(p.io_closed_form) << ","
-              << num(p.io_engine_ratio) << "," << num(p.t_impact) << "," << num(p.t_housner) << ","
-              << num(p.t_predicted) << "," << (rocking ? num(p.event_error()) : "") << "," << num(p.omega_ratio)
-              << "," << num(p.omega_ratio_housner) << "," << num(p.omega_ratio_scheme) << ","
-              << (rocking ? num(p.ratio_error()) : "") << "," << num(p.bounce) << "," << num(p.bounce_reference)
-              << "," << (rocking ? "" : num(p.event_error())) << "," << num(p.duration) << "," << num(p.dt) << ","
-              << p.steps << "," << p.element_updates << "," << num(p.wall_seconds) << ",\"" << status << "\"\n";
+              << "," << p.divisions[2] << "," << report::number_text(p.kn, 10) << "," << report::number_text(p.grid_spacing, 10) << "," << report::number_text(p.mass, 10)
+              << "," << report::number_text(p.ic_ratio, 10) << "," << report::number_text(p.io_ratio, 10) << "," << report::number_text(p.io_closed_form, 10) << ","
+              << report::number_text(p.io_engine_ratio, 10) << "," << report::number_text(p.t_impact, 10) << "," << report::number_text(p.t_housner, 10) << ","
+              << report::number_text(p.t_predicted, 10) << "," << (rocking ? report::number_text(p.event_error(), 10) : "") << "," << report::number_text(p.omega_ratio, 10)
+              << "," << report::number_text(p.omega_ratio_housner, 10) << "," << report::number_text(p.omega_ratio_scheme, 10) << ","
+              << (rocking ? report::number_text(p.ratio_error(), 10) : "") << "," << report::number_text(p.bounce, 10) << "," << report::number_text(p.bounce_reference, 10)
+              << "," << (rocking ? "" : report::number_text(p.event_error(), 10)) << "," << report::number_text(p.duration, 10) << "," << report::number_text(p.dt, 10) << ","
+              << p.steps << "," << p.element_updates << "," << report::number_text(p.wall_seconds, 10) << ",\"" << status << "\"\n";
         }
     });
 }
@@ -78,7 +52,7 @@ std::vector<StudyPoint> read_inertia_csv(const std::string& path) {
     std::vector<StudyPoint> out;
     for (int ln = 2; std::getline(in, line); ++ln) {
         if (line.empty()) continue;
-        const auto f = split(line);
+        const auto f = report::split_csv_line(line);
         if (f.size() != 30) throw Error(path + ":" + std::to_string(ln) + ": expected 30 fields, found " +
                                         std::to_string(f.size()));
         try {
