@@ -2,7 +2,10 @@
 // one inertial body load −m·a_g(t) per free block.
 #define CSV_IO_NO_THREAD
 #include <limits>   // libfccp's csv.h uses std::numeric_limits without including it
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wstringop-truncation"   // in the library's own error-name copy
 #include <libfccp/csv.h>
+#pragma GCC diagnostic pop
 
 #include <algorithm>
 #include <cmath>

@@ -24,7 +24,7 @@ double edge_ratio(const Vec3& size, const std::array<int, 3>& d, MassScheme sche
 
 TEST_CASE("I_O ratios of the four schemes follow the closed forms for n = 1, 2, 4", "[study]") {
     // both sides are exact for a box (quadrature exact, closed forms exact): 1e-12 is round-off
-    for (const Vec3 size : {Vec3(0.7, 0.2, 1.0), Vec3(0.2, 0.7, 1.0)})
+    for (const Vec3& size : {Vec3(0.7, 0.2, 1.0), Vec3(0.2, 0.7, 1.0)})
         for (int n : {1, 2, 4})
             for (MassScheme s : {MassScheme::barycentre, MassScheme::lumped, MassScheme::consistent,
                                  MassScheme::corrected}) {
