@@ -153,6 +153,35 @@ report::Document bench_document(const std::string& dir) {
         }
         d.paragraph("Wall seconds per simulated second of the cheapest configuration reaching 1 % error:");
         d.table(cost);
+        // the in-house rigid engine against the cheapest reference engine, case by case
+        std::vector<std::string> verdicts;
+        for (const auto& c : cases) {
+            const auto dem = cheapest_reaching(pts, c, "dem-rigid", 0.01);
+            double best = 0.0;
+            std::string best_name;
+            for (const auto& v : variants) {
+                if (v.rfind("dem", 0) == 0) continue;
+                const auto i = cheapest_reaching(pts, c, v, 0.01);
+                const double cost_v = i ? pts[*i].wall_seconds / pts[*i].sim_seconds : 0.0;
+                if (i && (best_name.empty() || cost_v < best)) best = cost_v, best_name = v;
+            }
+            if (!dem) {
+                verdicts.push_back(c + ": dem-rigid reaches no 1 % configuration in this sweep.");
+            } else if (best_name.empty()) {
+                verdicts.push_back(c + ": no reference engine reaches 1 %; dem-rigid does.");
+            } else {
+                const double mine = pts[*dem].wall_seconds / pts[*dem].sim_seconds;
+                verdicts.push_back(c + ": dem-rigid " + (mine <= best ? "leads " : "trails ") + best_name + " by " +
+                                   fmt("%.2g", mine <= best ? best / mine : mine / best) + "x (" + pts[*dem].knobs + ").");
+            }
+        }
+        d.bullets(verdicts);
+        d.paragraph("What bounds dem-rigid's cost: every hitting point of a contact face is evaluated each step "
+                    "(about 0.1 µs each; the 0.1 m grid puts 24 on the slender block's 0.2 x 0.7 m base, 121 on a "
+                    "1 m face), and its explicit step is a fraction of the contact springs' critical step, which "
+                    "falls as 1/sqrt(kn): a slender block's edge needs kn of 3e8 N/m³ or more for 1 % (physics.md). "
+                    "The reference engines' rigid contact has 4 manifold points and takes dt = 1e-3 s, but cannot "
+                    "represent the penalty spring (their matched mode needs dt 3e-5 s on the impact case).");
     }
     // stability
     if (fs::exists(root / "stability.csv")) {
