@@ -4,6 +4,9 @@
 
 #include <array>
 #include <cmath>
+#include <cstdarg>
+#include <cstdio>
+#include <stdexcept>
 #include <memory>
 #include <sstream>
 
@@ -24,10 +27,27 @@ struct ConvexData {
     std::array<unsigned, 6 * 5> polygons;  // 4, i0..i3 per face, counter-clockwise from outside
 };
 
+// ODE aborts the process on an internal error (e.g. its convex-convex collider failing to
+// normalise a degenerate normal); its handlers let cairn stop the run with a message instead
+struct OdeFault : std::runtime_error {
+    using std::runtime_error::runtime_error;
+};
+
+[[noreturn]] void throw_ode_fault(int errnum, const char* msg, va_list ap) {
+    char text[512];
+    std::vsnprintf(text, sizeof text, msg, ap);
+    throw OdeFault("ODE internal error " + std::to_string(errnum) + ": " + text);
+}
+
 class OdeBackend : public Backend {
 public:
     OdeBackend() {
-        static const bool initialised = dInitODE2(0) != 0;
+        static const bool initialised = [] {
+            dInitODE2(0);
+            dSetErrorHandler(&throw_ode_fault);
+            dSetDebugHandler(&throw_ode_fault);
+            return true;
+        }();
         (void)initialised;
     }
     ~OdeBackend() override { clear(); }
@@ -280,9 +300,15 @@ StepStatus OdeBackend::step() {
     double p0 = load_power();
     contact_energy_ = 0.0;
     contact_count_ = 0;
-    dSpaceCollide(space_, this, &OdeBackend::near_callback);
-    if (quickstep_) dWorldQuickStep(world_, dt_);
-    else dWorldStep(world_, dt_);
+    try {
+        dSpaceCollide(space_, this, &OdeBackend::near_callback);
+        if (quickstep_) dWorldQuickStep(world_, dt_);
+        else dWorldStep(world_, dt_);
+    } catch (const OdeFault& e) {
+        dJointGroupEmpty(contacts_);
+        failure_ = std::string(e.what()) + " at t = " + std::to_string(t_) + " s";
+        return StepStatus::unstable;
+    }
     dJointGroupEmpty(contacts_);
     t_ += dt_;
     if (scene_.damping.alpha > 0) {
