@@ -18,7 +18,7 @@ std::vector<FeatureSupport> ode_capabilities() {
         {"mass-proportional damping", S::approximate, "velocities scaled by exp(-alpha·dt) after each step"},
         {"stiffness-proportional damping", S::none, "beta ignored (rigid bodies)"},
         {"deformable blocks", S::none, "refused: run with --model rigid"},
-        {"general convex hexahedra", S::approximate, "dCreateConvex; ODE's convex colliders may give one contact point"},
+        {"general convex hexahedra", S::approximate, "dCreateConvex; one contact point per pair at times, and an internal error (the run stops) on face-to-face joints such as an arch's"},
     };
 }
 
