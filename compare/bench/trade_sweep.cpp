@@ -172,9 +172,9 @@ std::vector<TradePoint> run_trade(const std::vector<TradeConfig>& configs, const
     std::vector<TradePoint> done = read_trade_csv(csv_path);
     std::set<std::string> have;
     for (const auto& p : done) have.insert(p.key());
-    std::vector<const TradeConfig*> todo;
+    std::vector<const TradeConfig*> pending;
     for (const auto& c : configs)
-        if (!have.count(c.point.key())) todo.push_back(&c);
+        if (!have.count(c.point.key())) pending.push_back(&c);
     std::error_code ec;
     const bool fresh = !fs::exists(csv_path, ec) || fs::file_size(csv_path, ec) == 0;
     if (!fresh) {
@@ -196,15 +196,15 @@ std::vector<TradePoint> run_trade(const std::vector<TradeConfig>& configs, const
     }
     out.flush();
     if (!options.quiet && !done.empty())
-        std::cerr << "trade: " << done.size() << " points already in " << csv_path << ", " << todo.size()
+        std::cerr << "trade: " << done.size() << " points already in " << csv_path << ", " << pending.size()
                   << " to run\n";
 
     PoolOptions po{options.repeats, options.jobs, options.quiet, "trade"};
     std::vector<PoolJob> jobs;
-    for (const auto* c : todo) jobs.push_back({c->point.backend, c->point.variant + " " + c->point.case_name + " " + c->point.knobs,
+    for (const auto* c : pending) jobs.push_back({c->point.backend, c->point.variant + " " + c->point.case_name + " " + c->point.knobs,
                                                &c->scene, c->contact_mode});
     run_pool(jobs, po, make, [&](size_t j, const PoolResult& r, std::mutex& lock) {
-        TradePoint p = todo[j]->point;
+        TradePoint p = pending[j]->point;
         p.status = r.outcome;
         p.wall_seconds = r.median_wall;
         p.dt = r.result.dt;
@@ -213,8 +213,8 @@ std::vector<TradePoint> run_trade(const std::vector<TradeConfig>& configs, const
         p.error = NAN;
         if (r.outcome == "completed") {
             try {
-                const bool penalty = p.backend == "dem" || todo[j]->contact_mode == "matched";
-                p.error = trade_error(todo[j]->scene, r.result.samples, penalty, p.error_metric);
+                const bool penalty = p.backend == "dem" || pending[j]->contact_mode == "matched";
+                p.error = trade_error(pending[j]->scene, r.result.samples, penalty, p.error_metric);
                 if (!std::isfinite(p.error)) p.status = "no event";
             } catch (const std::exception& e) {
                 p.status = std::string("analysis failed: ") + e.what();

@@ -205,6 +205,14 @@ Mat3 DeformableBody::lumped_inertia_world(const std::vector<Vec3>& x, Vec3& cent
     return g;
 }
 
+void DeformableBody::rotation_inertias(const std::vector<Vec3>& x, Vec3& centre, Mat3& lumped, Mat3& target) const {
+    lumped = lumped_inertia_world(x, centre);
+    Vec3 centre_fit;
+    Mat3 rot;
+    pose(x, centre_fit, rot);
+    target = rot * target_inertia_ * rot.transpose();
+}
+
 void DeformableBody::accelerations(const std::vector<Vec3>& x, const std::vector<Vec3>& f, std::vector<Vec3>& a) {
     const size_t nn = x.size();
     if (scheme_ == MassScheme::consistent) {
@@ -231,11 +239,8 @@ void DeformableBody::accelerations(const std::vector<Vec3>& x, const std::vector
     if (!rotation_correction_) return;
     // rigid rotations get the target inertia T instead of the lumped G: a += (T⁻¹ − G⁻¹)τ × r
     Vec3 c;
-    Mat3 g = lumped_inertia_world(x, c);
-    Vec3 centre_ref;
-    Mat3 rot;
-    pose(x, centre_ref, rot);
-    Mat3 t = rot * target_inertia_ * rot.transpose();
+    Mat3 g, t;
+    rotation_inertias(x, c, g, t);
     Vec3 torque = Vec3::Zero();
     for (size_t n = 0; n < nn; ++n) torque += (x[n] - c).cross(f[n]);
     Vec3 delta = t.ldlt().solve(torque) - g.ldlt().solve(torque);
@@ -254,11 +259,8 @@ double DeformableBody::kinetic_energy(const std::vector<Vec3>& x, const std::vec
     if (!rotation_correction_) return e;
     // + ½ Lᵀ C L with C = G⁻¹ (T − G) G⁻¹ on the lumped angular momentum L
     Vec3 c;
-    Mat3 g = lumped_inertia_world(x, c);
-    Vec3 centre_ref;
-    Mat3 rot;
-    pose(x, centre_ref, rot);
-    Mat3 t = rot * target_inertia_ * rot.transpose();
+    Mat3 g, t;
+    rotation_inertias(x, c, g, t);
     Vec3 l = Vec3::Zero();
     for (size_t n = 0; n < x.size(); ++n) l += lumped_[n] * (x[n] - c).cross(v[n]);
     Vec3 gl = g.ldlt().solve(l);

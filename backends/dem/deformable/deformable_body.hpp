@@ -47,6 +47,8 @@ public:
 
 private:
     Mat3 lumped_inertia_world(const std::vector<Vec3>& x, Vec3& centre) const;
+    // the lumped inertia G about the lumped centre and the target inertia T, both world, now
+    void rotation_inertias(const std::vector<Vec3>& x, Vec3& centre, Mat3& lumped, Mat3& target) const;
 
     MassScheme scheme_;
     Lame lame_;
