@@ -222,17 +222,19 @@ void BulletBackend::build(const Scene& scene, const RunOptions& options) {
 }
 
 StepStatus BulletBackend::step() {
-    // loads at their material points; Bullet clears applied forces after every step
-    std::vector<std::pair<int, Vec3>> applied;
-    for (const LoadDef& l : scene_.loads) {
-        double f = l.factor(t_);
-        if (f == 0.0) continue;
+    // lever arm (world) of a load's material point from its body's centre of mass
+    auto arm = [&](const LoadDef& l) {
         btRigidBody* body = bodies_[l.block].get();
         const RigidBlock& b = blocks_[l.block];
         Quat q = eig(body->getOrientation()) * Quat(b.principal.transpose());
         Vec3 com = eig(body->getCenterOfMassPosition());
-        Vec3 p = block_point_world(b, com, q, l.point);
-        body->applyForce(bt(f * l.force), bt(p - com));
+        return Vec3(block_point_world(b, com, q, l.point) - com);
+    };
+    // loads at their material points; Bullet clears applied forces after every step
+    for (const LoadDef& l : scene_.loads) {
+        double f = l.factor(t_);
+        if (f == 0.0) continue;
+        bodies_[l.block]->applyForce(bt(f * l.force), bt(arm(l)));
     }
     // work of the loads: force at the start of the step times the point's mean velocity
     auto load_power = [&]() {
@@ -241,11 +243,7 @@ StepStatus BulletBackend::step() {
             double f = l.factor(t_);
             if (f == 0.0) continue;
             btRigidBody* body = bodies_[l.block].get();
-            const RigidBlock& b = blocks_[l.block];
-            Quat q = eig(body->getOrientation()) * Quat(b.principal.transpose());
-            Vec3 com = eig(body->getCenterOfMassPosition());
-            Vec3 r = block_point_world(b, com, q, l.point) - com;
-            Vec3 v = eig(body->getLinearVelocity()) + eig(body->getAngularVelocity()).cross(r);
+            Vec3 v = eig(body->getLinearVelocity()) + eig(body->getAngularVelocity()).cross(arm(l));
             power += f * l.force.dot(v);
         }
         return power;
