@@ -275,9 +275,7 @@ Sample BulletBackend::sample() const {
         st.orientation = (eig(body->getOrientation()) * Quat(b.principal.transpose())).normalized();
         st.velocity = eig(body->getLinearVelocity());
         st.angular_velocity = eig(body->getAngularVelocity());
-        s.energy.kinetic += kinetic_energy(b, st.orientation, st.velocity, st.angular_velocity);
-        s.energy.potential += potential_energy(b, scene_.gravity, st.position);
-        s.blocks.push_back(st);
+        add_block_state(s, b, st, scene_.gravity);
     }
     for (const ProbeDef& p : scene_.probes) {
         const RigidBlock& b = blocks_[p.block];

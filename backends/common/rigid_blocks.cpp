@@ -101,6 +101,12 @@ PointSpring matched_point_spring(const Scene& scene, const RigidBlock& a, const 
     return {k / points, c / points};
 }
 
+void add_block_state(Sample& sample, const RigidBlock& b, const BlockState& st, const Vec3& gravity) {
+    sample.energy.kinetic += kinetic_energy(b, st.orientation, st.velocity, st.angular_velocity);
+    sample.energy.potential += potential_energy(b, gravity, st.position);
+    sample.blocks.push_back(st);
+}
+
 std::vector<std::string> rigid_engine_notes(const Scene& scene) {
     std::vector<std::string> n;
     if (scene.contact.ks > 0) n.push_back("shear stiffness ks: ignored (velocity-level friction)");

@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include "backend/backend.hpp"
 #include "geometry/hexahedron.hpp"
 #include "scene/scene.hpp"
 
@@ -40,6 +41,9 @@ double kinetic_energy(const RigidBlock& b, const Quat& q, const Vec3& v, const V
 
 /// gravity potential −m g·x of a block whose centre of mass is at `com_world`, J
 double potential_energy(const RigidBlock& b, const Vec3& gravity, const Vec3& com_world);
+
+/// append a free block's state to a sample, adding its kinetic and gravitational energy
+void add_block_state(Sample& sample, const RigidBlock& b, const BlockState& state, const Vec3& gravity);
 
 /// per-point penalty spring of the matched contact mode
 struct PointSpring {

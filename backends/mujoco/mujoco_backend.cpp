@@ -290,9 +290,7 @@ Sample MujocoBackend::sample() const {
         st.orientation = orientation(body).normalized();
         st.velocity = Vec3(qv[0], qv[1], qv[2]);
         st.angular_velocity = st.orientation * Vec3(qv[3], qv[4], qv[5]);
-        s.energy.kinetic += kinetic_energy(b, st.orientation, st.velocity, st.angular_velocity);
-        s.energy.potential += potential_energy(b, scene_.gravity, st.position);
-        s.blocks.push_back(st);
+        add_block_state(s, b, st, scene_.gravity);
     }
     for (const ProbeDef& p : scene_.probes) s.probes.push_back(point(p.block, p.point));
     s.energy.external = external_work_;

@@ -343,9 +343,7 @@ Sample OdeBackend::sample() const {
         const dReal* w = dBodyGetAngularVel(body);
         st.velocity = Vec3(v[0], v[1], v[2]);
         st.angular_velocity = Vec3(w[0], w[1], w[2]);
-        s.energy.kinetic += kinetic_energy(b, st.orientation, st.velocity, st.angular_velocity);
-        s.energy.potential += potential_energy(b, scene_.gravity, st.position);
-        s.blocks.push_back(st);
+        add_block_state(s, b, st, scene_.gravity);
     }
     for (const ProbeDef& p : scene_.probes)
         s.probes.push_back(block_point_world(blocks_[p.block], com(p.block), orientation(p.block), p.point));
