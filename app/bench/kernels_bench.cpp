@@ -65,17 +65,16 @@ void internal_force(benchmark::State& state) { internal_force_case(state, false,
 void internal_force_distorted(benchmark::State& state) { internal_force_case(state, true, 0.0); }
 void internal_force_damped(benchmark::State& state) { internal_force_case(state, false, 1e-6); }
 
-// whole steps of an n³ deformable cube resting on a fixed rigid cube (contact included)
-void whole_step(benchmark::State& state) {
-    const int n = int(state.range(0));
-    set_threads(int(state.range(1)));
+// a scene of one deformable n³ cube; `on_base`: resting on a fixed rigid cube (contact included),
+// otherwise spinning in free flight (no contact: the element path of the step alone)
+Scene cube_scene(int n, bool on_base) {
     Scene s;
     s.name = "bench";
     s.materials.push_back({"stone", 2600, 30e9, 0.2});
     s.contact.kn = s.contact.ks = 3e7;
     s.contact.friction = 0.6;
     s.run.duration = 1.0;
-    for (int i = 0; i < 2; ++i) {
+    for (int i = 0; i < (on_base ? 2 : 1); ++i) {
         BlockDef b;
         b.name = i == 0 ? "A" : "B";
         b.size = Vec3(1, 1, 1);
@@ -84,13 +83,28 @@ void whole_step(benchmark::State& state) {
         b.fixed = i == 1;
         b.model = i == 0 ? BlockModel::deformable : BlockModel::rigid;
         b.mesh.divisions = {n, n, n};
+        if (!on_base) b.angular_velocity = Vec3(1.0, 2.0, 0.5);
         s.blocks.push_back(b);
     }
+    return s;
+}
+
+// whole dem steps, in element updates per second
+void steps(benchmark::State& state, bool on_base) {
+    const int n = int(state.range(0));
+    set_threads(int(state.range(1)));
+    Scene s = cube_scene(n, on_base);
     auto backend = dem_backend_info().make();
     backend->build(s, RunOptions{});
     for (auto _ : state) benchmark::DoNotOptimize(backend->step());
     state.SetItemsProcessed(state.iterations() * int64_t(n) * n * n);
 }
+
+// whole steps of an n³ deformable cube resting on a fixed rigid cube (contact included)
+void whole_step(benchmark::State& state) { steps(state, true); }
+
+// whole steps of an n³ deformable cube spinning in free flight (no contact)
+void whole_step_free(benchmark::State& state) { steps(state, false); }
 
 void meshes(benchmark::internal::Benchmark* b) {
     for (int threads : {1, 2})
@@ -104,4 +118,5 @@ BENCHMARK(internal_force)->Apply(meshes);
 BENCHMARK(internal_force_distorted)->Apply(meshes);
 BENCHMARK(internal_force_damped)->Apply(meshes);
 BENCHMARK(whole_step)->Apply(meshes);
+BENCHMARK(whole_step_free)->Apply(meshes);
 BENCHMARK_MAIN();
