@@ -8,6 +8,8 @@
 #include <sstream>
 
 #include "bench/bench_report.hpp"
+
+#include "report/gnuplot.hpp"
 #include "output/atomic_write.hpp"
 
 namespace fs = std::filesystem;
@@ -27,24 +29,6 @@ std::string colour(const std::string& variant) {
     return it != c.end() ? it->second : "#7f7f7f";
 }
 
-/// true when gnuplot runs; sets `cairo` when it has pngcairo
-bool have_gnuplot(bool& cairo, std::string& note) {
-    if (std::system("command -v gnuplot > /dev/null 2>&1") != 0) {
-        note = "gnuplot was not found: no figures (install gnuplot-nox and rerun)";
-        return false;
-    }
-    cairo = std::system("gnuplot -e 'set terminal pngcairo' > /dev/null 2>&1") == 0;
-    return true;
-}
-
-bool run_gnuplot(const fs::path& fig, const std::string& name, const std::string& script, std::string& note) {
-    write_text_atomic((fig / (name + ".gp")).string(), script);
-    const std::string cmd = "cd '" + fig.string() + "' && gnuplot '" + name + ".gp' > '" + name + ".gp.log' 2>&1";
-    if (std::system(cmd.c_str()) == 0) return true;
-    note += "gnuplot failed on figures/" + name + ".gp (see its .log). ";
-    return false;
-}
-
 /// 100·|e| floored at 1e-5 % for a log axis
 double pct(double e) { return std::max(std::abs(e) * 100.0, 1e-5); }
 
@@ -52,8 +36,7 @@ double pct(double e) { return std::max(std::abs(e) * 100.0, 1e-5); }
 
 std::vector<std::string> write_pareto_figures(const std::string& dir, const std::vector<TradePoint>& points,
                                               std::string& note) {
-    bool cairo = false;
-    if (!have_gnuplot(cairo, note)) return {};
+    if (!report::gnuplot_available(note)) return {};
     const fs::path fig = fs::path(dir) / "figures";
     fs::create_directories(fig);
     std::vector<std::string> cases;
@@ -80,7 +63,7 @@ std::vector<std::string> write_pareto_figures(const std::string& dir, const std:
         const std::string name = "pareto_" + c;
         write_text_atomic((fig / (name + ".dat")).string(), dat.str());
         std::ostringstream gp;
-        gp << "set terminal " << (cairo ? "pngcairo" : "png") << " size 900,620 font ',11'\n"
+        gp << "set terminal " << report::gnuplot_png_terminal() << " size 900,620 font ',11'\n"
            << "set output '" << name << ".png'\nset logscale xy\nset grid\nset key outside right top\n"
            << "set format y '%g'\nset format x '%g'\n"
            << "set title '" << c << ": error against the oracle vs wall time (median of repeats)' noenhanced\n"
@@ -93,15 +76,14 @@ std::vector<std::string> write_pareto_figures(const std::string& dir, const std:
                << "' title '" << variants[i] << "', ";
         gp << "'" << name << ".dat' index " << variants.size()
            << " using 1:2 with steps lw 2 lc rgb 'black' title 'Pareto front'\n";
-        if (run_gnuplot(fig, name, gp.str(), note)) out.push_back("figures/" + name + ".png");
+        if (report::run_gnuplot(fig.string(), name, gp.str(), note)) out.push_back("figures/" + name + ".png");
     }
     return out;
 }
 
 std::vector<std::string> write_stability_figures(const std::string& dir, const std::vector<StabilityPoint>& points,
                                                  std::string& note) {
-    bool cairo = false;
-    if (!have_gnuplot(cairo, note)) return {};
+    if (!report::gnuplot_available(note)) return {};
     const fs::path fig = fs::path(dir) / "figures";
     fs::create_directories(fig);
     std::vector<std::string> backends, params;
@@ -128,7 +110,7 @@ std::vector<std::string> write_stability_figures(const std::string& dir, const s
         const std::string name = "stability_" + b;
         write_text_atomic((fig / (name + ".dat")).string(), dat.str());
         std::ostringstream gp;
-        gp << "set terminal " << (cairo ? "pngcairo" : "png") << " size 1000," << 120 + 55 * params.size() << " font ',11'\n"
+        gp << "set terminal " << report::gnuplot_png_terminal() << " size 1000," << 120 + 55 * params.size() << " font ',11'\n"
            << "set output '" << name << ".png'\nunset key\nunset colorbox\nset xtics scale 0 format ''\n"
            << "set xrange [-0.5:" << width - 0.5 << "]\nset yrange [" << params.size() - 0.5 << ":-0.5]\n"
            << "set title '" << b << ": green stable, red unstable, purple drifting, orange wrong, grey refused' noenhanced\n"
@@ -138,7 +120,7 @@ std::vector<std::string> write_stability_figures(const std::string& dir, const s
         gp << ") noenhanced\nset lmargin 16\n"
            << "plot '" << name << ".dat' using 1:2:(0.5):(0.5):3 with boxxyerror fc palette, '' using 1:2:4 "
            << "with labels noenhanced font ',10'\n";
-        if (run_gnuplot(fig, name, gp.str(), note)) out.push_back("figures/" + name + ".png");
+        if (report::run_gnuplot(fig.string(), name, gp.str(), note)) out.push_back("figures/" + name + ".png");
     }
     return out;
 }

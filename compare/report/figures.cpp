@@ -9,6 +9,7 @@
 #include <sstream>
 
 #include "geometry/hexahedron.hpp"
+#include "report/gnuplot.hpp"
 #include "metrics/signal.hpp"
 #include "output/atomic_write.hpp"
 
@@ -18,11 +19,8 @@ namespace cairn::report {
 
 namespace {
 
-bool has_gnuplot() { return std::system("command -v gnuplot > /dev/null 2>&1") == 0; }
-
 std::string terminal() {
-    bool cairo = std::system("gnuplot -e 'set terminal pngcairo' > /dev/null 2>&1") == 0;
-    return cairo ? "pngcairo noenhanced size 1000,760 font 'sans,10'" : "png noenhanced size 1000,760";
+    return std::string(gnuplot_png_terminal()) + " noenhanced size 1000,760 font 'sans,10'";
 }
 
 /// t, measured, analytic (or NaN), difference (to the analytic curve, else to the first run)
@@ -96,10 +94,7 @@ std::string quoted(const std::string& s) {
 
 FigureSet write_figures(const std::vector<validation::CaseResult>& cases, const std::string& dir) {
     FigureSet out;
-    if (!has_gnuplot()) {
-        out.note = "gnuplot was not found: no figures (install gnuplot-nox and rerun)";
-        return out;
-    }
+    if (!gnuplot_available(out.note)) return out;
     const std::string term = terminal();
     const fs::path fig = fs::path(dir) / "figures";
     fs::create_directories(fig);
@@ -188,13 +183,7 @@ FigureSet write_figures(const std::vector<validation::CaseResult>& cases, const 
             write_text_atomic((fig / (c.name + "_snapshots.gp")).string(), sg.str());
             images.push_back("figures/" + c.name + "_snapshots.png");
         }
-        bool ok = true;
-        for (const auto& img : images) {
-            const std::string script = fs::path(img).stem().string() + ".gp";
-            const std::string cmd = "cd '" + fig.string() + "' && gnuplot '" + script + "' > '" + script + ".log' 2>&1";
-            ok = std::system(cmd.c_str()) == 0 && ok;
-        }
-        if (!ok) out.note += "gnuplot failed on some figures of " + c.name + " (see figures/*.gp.log). ";
+        for (const auto& img : images) run_gnuplot_file(fig.string(), fs::path(img).stem().string(), out.note);
         for (const auto& img : images)
             if (fs::exists(fs::path(dir) / img)) out.images[c.name].push_back(img);
     }

@@ -7,6 +7,8 @@
 #include "output/atomic_write.hpp"
 #include "study/study_report.hpp"
 
+#include "report/gnuplot.hpp"
+
 namespace cairn::study {
 
 namespace {
@@ -65,14 +67,10 @@ std::vector<std::string> write_inertia_figures(const std::string& dir, const std
     namespace fs = std::filesystem;
     const fs::path fig = fs::path(dir) / "figures";
     fs::create_directories(fig);
-    if (std::system("command -v gnuplot > /dev/null 2>&1") != 0) {
-        note = "gnuplot was not found: no figures (install gnuplot-nox and rerun)";
-        return {};
-    }
-    const bool cairo = std::system("gnuplot -e 'set terminal pngcairo' > /dev/null 2>&1") == 0;
+    if (!report::gnuplot_available(note)) return {};
     for (const auto& c : kCases) write_data((fig / ("inertia_" + c + ".dat")).string(), pts, c);
     std::ostringstream head;
-    head << "set terminal " << (cairo ? "pngcairo" : "png") << " size 1500,480 font ',10'\n"
+    head << "set terminal " << report::gnuplot_png_terminal() << " size 1500,480 font ',10'\n"
          << "set style line 1 lc rgb '#d62728' pt 7 lw 2\nset style line 2 lc rgb '#1f77b4' pt 5 lw 2\n"
          << "set style line 3 lc rgb '#2ca02c' pt 9 lw 2\nset style line 4 lc rgb '#9467bd' pt 11 lw 2 dt 2\n"
          << "set style line 5 lc rgb 'black' pt 3 ps 2\nset grid\nset key top right\n";
@@ -120,11 +118,8 @@ std::vector<std::string> write_inertia_figures(const std::string& dir, const std
     }
     std::vector<std::string> out;
     for (const auto& f : figures) {
-        const std::string script = f.name + ".gp";
-        write_text_atomic((fig / script).string(), head.str() + f.body);
-        const std::string cmd = "cd '" + fig.string() + "' && gnuplot '" + script + "' > '" + script + ".log' 2>&1";
-        if (std::system(cmd.c_str()) == 0) out.push_back("figures/" + f.name + ".png");
-        else note += "gnuplot failed on figures/" + script + " (see its .log). ";
+        if (report::run_gnuplot(fig.string(), f.name, head.str() + f.body, note))
+            out.push_back("figures/" + f.name + ".png");
     }
     return out;
 }
