@@ -6,6 +6,50 @@
 
 namespace cairn::dem {
 
+namespace {
+
+// hitting points of every boundary face. On a side meshed into equal faces a point on an edge
+// shared by two faces (or a vertex shared by four) is kept once, by the face before it, with the
+// tributary areas of all the faces that share it: the side carries one regular grid.
+std::vector<std::vector<HitPoint>> hitting_points(const Mesh& mesh, double spacing) {
+    auto quad = [&](int f) {
+        const auto& fc = mesh.faces[f];
+        return Quad{mesh.nodes[fc[0]], mesh.nodes[fc[1]], mesh.nodes[fc[2]], mesh.nodes[fc[3]]};
+    };
+    std::vector<std::vector<HitPoint>> hits(mesh.faces.size());
+    for (size_t f = 0; f < mesh.faces.size(); ++f) hits[f] = hit_grid(quad(int(f)), spacing);
+    for (int s = 0; s < 6; ++s) {
+        const auto& grid = mesh.side_grid[s];
+        const int nu = mesh.side_nu[s], nv = mesh.side_nv[s];
+        if (grid.size() < 2) continue;
+        // only where every face of the side is the same: the shared points then coincide exactly
+        const auto counts = hit_grid_counts(quad(grid[0]), spacing);
+        const double area = quad_area(quad(grid[0]));
+        bool uniform = true;
+        for (int f : grid)
+            uniform = uniform && hit_grid_counts(quad(f), spacing) == counts &&
+                      std::abs(quad_area(quad(f)) - area) <= 1e-12 * area;
+        if (!uniform) continue;
+        const int gi = counts[0], gj = counts[1];
+        for (int v = 0; v < nv; ++v)
+            for (int u = 0; u < nu; ++u) {
+                std::vector<HitPoint> kept;
+                const auto& all = hits[grid[v * nu + u]];
+                for (int j = 0; j < gj; ++j)
+                    for (int i = 0; i < gi; ++i) {
+                        if ((i == gi - 1 && u < nu - 1) || (j == gj - 1 && v < nv - 1)) continue;
+                        HitPoint p = all[j * gi + i];
+                        p.area *= (i == 0 && u > 0 ? 2 : 1) * (j == 0 && v > 0 ? 2 : 1);
+                        kept.push_back(p);
+                    }
+                hits[grid[v * nu + u]] = std::move(kept);
+            }
+    }
+    return hits;
+}
+
+}  // namespace
+
 Block make_block(const BlockDef& def, const Scene& scene) {
     const Material& mat = scene.materials[def.material];
     const bool deformable = def.model == BlockModel::deformable && !def.fixed;
@@ -28,10 +72,7 @@ Block make_block(const BlockDef& def, const Scene& scene) {
         b.side_area[s] = quad_area(q);
         for (int i = 0; i < 4; ++i) b.min_edge = std::min(b.min_edge, (q[(i + 1) % 4] - q[i]).norm());
     }
-    for (const auto& face : b.mesh.faces) {
-        Quad q{b.mesh.nodes[face[0]], b.mesh.nodes[face[1]], b.mesh.nodes[face[2]], b.mesh.nodes[face[3]]};
-        b.hits.push_back(hit_grid(q, scene.contact.grid_spacing));
-    }
+    b.hits = hitting_points(b.mesh, scene.contact.grid_spacing);
     const size_t nn = b.mesh.nodes.size();
     b.x.resize(nn);
     b.v.assign(nn, Vec3::Zero());

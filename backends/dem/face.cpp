@@ -76,11 +76,15 @@ double quad_area(const Quad& c) {
     return a;
 }
 
-std::vector<HitPoint> hit_grid(const Quad& c, double spacing) {
+std::array<int, 2> hit_grid_counts(const Quad& c, double spacing) {
     double len_xi = std::max((c[1] - c[0]).norm(), (c[2] - c[3]).norm());
     double len_eta = std::max((c[3] - c[0]).norm(), (c[2] - c[1]).norm());
     auto count = [&](double len) { return std::max(2, int(std::ceil(len / spacing - 1e-9)) + 1); };
-    int nu = count(len_xi), nv = count(len_eta);
+    return {count(len_xi), count(len_eta)};
+}
+
+std::vector<HitPoint> hit_grid(const Quad& c, double spacing) {
+    const auto [nu, nv] = hit_grid_counts(c, spacing);
     double du = 2.0 / (nu - 1), dv = 2.0 / (nv - 1);
     std::vector<HitPoint> pts;
     pts.reserve(nu * nv);

@@ -68,6 +68,9 @@ struct HitPoint {
 /// tributary areas by the trapezoid rule
 std::vector<HitPoint> hit_grid(const Quad& c, double spacing);
 
+/// points of hit_grid along ξ and along η
+std::array<int, 2> hit_grid_counts(const Quad& c, double spacing);
+
 /// area of the face, m²
 double quad_area(const Quad& c);
 

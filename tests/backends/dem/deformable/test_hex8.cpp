@@ -6,6 +6,7 @@
 
 #include "dem/deformable/deformable_body.hpp"
 #include "dem/deformable/hex8.hpp"
+#include "dem/block_builder.hpp"
 #include "dem/mesh.hpp"
 
 using namespace cairn;
@@ -102,5 +103,30 @@ TEST_CASE("critical step of a lumped hex8 cube is sqrt(2/3)·L/c_d", "[dem][hex8
         DeformableBody body(mesh, stone, MassScheme::lumped, 0.0, std::vector<char>(8, 0));
         // physics.md: the fully integrated lumped hex8 cube: Δt = √(2/3)·L/c_d exactly
         CHECK(2.0 / body.max_element_omega() == Approx(std::sqrt(2.0 / 3.0) * l / cd).epsilon(1e-9));
+    }
+}
+
+TEST_CASE("a meshed side carries one regular grid of hitting points whose areas sum to the side's", "[dem][contact]") {
+    Scene s;
+    s.materials.push_back({"stone", 2600, 30e9, 0.2});
+    s.contact.grid_spacing = 0.1;
+    BlockDef d;
+    d.name = "A";
+    d.size = Vec3(1.0, 1.0, 1.0);
+    d.corners = box_corners(d.size);
+    d.model = BlockModel::deformable;
+    d.mesh.divisions = {4, 4, 4};
+    Block b = make_block(d, s);
+    for (int side = 0; side < 6; ++side) {
+        double area = 0.0;
+        size_t points = 0;
+        for (int f : b.mesh.side_grid[side]) {
+            for (const auto& p : b.hits[f]) area += p.area;
+            points += b.hits[f].size();
+        }
+        // 0.25 m faces at a 0.1 m spacing: 4 x 4 points each; shared edges kept once: 13 x 13
+        CHECK(points == 13u * 13u);
+        // the trapezoid weights of a uniform grid sum to the area exactly (rounding only)
+        CHECK(area == Approx(1.0).epsilon(1e-12));
     }
 }
