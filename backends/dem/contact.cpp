@@ -48,10 +48,16 @@ void ContactSet::refresh(std::vector<Block>& blocks) {
                 for (int n : blocks[h].mesh.faces[f]) fb.add(blocks[h].x[n]);
                 fb.inflate(0.5 * margin_);
                 if (!fb.overlaps(boxes_[t])) continue;
-                Candidate c{h, f, t, {}};
+                Candidate c;
+                c.hit_block = h;
+                c.hit_face = f;
+                c.target_block = t;
                 auto it = std::lower_bound(previous_.begin(), previous_.end(), c,
                                            [&](const Candidate& a, const Candidate& b) { return key(a) < key(b); });
-                if (it != previous_.end() && key(*it) == key(c)) c.anchors = std::move(it->anchors);
+                if (it != previous_.end() && key(*it) == key(c)) {
+                    c.anchors = std::move(it->anchors);
+                    c.forces = std::move(it->forces);   // keeps its capacity: no allocation in the step
+                }
                 c.anchors.resize(blocks[h].hits[f].size());
                 candidates_.push_back(std::move(c));
             }
@@ -92,14 +98,24 @@ double reduced_mass(const Block& a, const Block& b) {
 }  // namespace
 
 ContactTotals ContactSet::apply(std::vector<Block>& blocks, double dt) {
-    ContactTotals tot;
+    const long count = long(candidates_.size());
+    // below 64 candidates the fork costs more than it saves: one thread spreads as it goes
+    const bool parallel = count >= 64;
+#pragma omp parallel if (parallel)
+    {
+    // per thread: the geometry of the (hitting, target) pair of the candidates it is on
     int cached_h = -1, cached_t = -1;
     TargetSides sides;
     std::array<int, 6> best_side{};   // per target side: the hitting block's side most opposed to it
     std::array<char, 6> target_ok{};  // per target side: it is the target for that side
     double flush_tol = 0.0, closer_tol = 0.0;
     std::array<ParallelogramFrame, 6> frames;   // rigid parallelogram target sides: closed-form projection
-    for (auto& c : candidates_) {
+#pragma omp for schedule(static, 1)
+    for (long ci = 0; ci < count; ++ci) {
+        Candidate& c = candidates_[size_t(ci)];
+        c.forces.clear();
+        c.totals = ContactTotals{};
+        ContactTotals& tot = c.totals;
         Block& hb = blocks[c.hit_block];
         Block& tb = blocks[c.target_block];
         if (c.hit_block != cached_h || c.target_block != cached_t) {
@@ -221,10 +237,32 @@ ContactTotals ContactSet::apply(std::vector<Block>& blocks, double dt) {
             } else {
                 anchor.side = -1;
             }
-            const Vec3 force = fn * n + fs;
-            spread(hb, c.hit_face, pts[k].xi, force);
-            spread(tb, face, pr.xi, -force);
+            if (parallel) {
+                c.forces.push_back({int(k), face, pr.xi, fn * n + fs});
+            } else {
+                spread(hb, c.hit_face, pts[k].xi, fn * n + fs);
+                spread(tb, face, pr.xi, -(fn * n + fs));
+            }
             ++tot.active;
+        }
+    }
+    }
+    // spread and add up in the candidates' order
+    ContactTotals tot;
+    for (auto& c : candidates_) {
+        Block& hb = blocks[c.hit_block];
+        Block& tb = blocks[c.target_block];
+        for (const auto& p : c.forces) {
+            spread(hb, c.hit_face, hb.hits[c.hit_face][p.point].xi, p.force);
+            spread(tb, p.target_face, p.target_xi, -p.force);
+        }
+        tot.stored += c.totals.stored;
+        tot.dissipated += c.totals.dissipated;
+        tot.active += c.totals.active;
+        if (c.totals.worst_depth > tot.worst_depth) {
+            tot.worst_depth = c.totals.worst_depth;
+            tot.worst_hit = c.totals.worst_hit;
+            tot.worst_target = c.totals.worst_target;
         }
     }
     return tot;

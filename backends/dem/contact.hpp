@@ -19,14 +19,6 @@ struct Anchor {
     Vec2 xi0 = Vec2::Zero();    ///< natural coordinates of the stick point on that face
 };
 
-/// A hitting face that may touch a target block.
-struct Candidate {
-    int hit_block = 0;
-    int hit_face = 0;
-    int target_block = 0;
-    std::vector<Anchor> anchors;  ///< one per hitting point of the face
-};
-
 /// Energies and counts of one contact evaluation.
 struct ContactTotals {
     double stored = 0.0;      ///< elastic energy in the normal and shear springs, J
@@ -36,6 +28,25 @@ struct ContactTotals {
     int worst_hit = -1, worst_target = -1;  ///< the blocks of that deepest point
 };
 
+/// The force of one penetrating hitting point, kept until it is spread to the nodes.
+struct PointForce {
+    int point = 0;              ///< index among the hitting face's points
+    int target_face = 0;        ///< target boundary face it acts on
+    Vec2 target_xi = Vec2::Zero();  ///< natural coordinates of its projection there
+    Vec3 force = Vec3::Zero();  ///< on the hitting block (the target takes −force), N
+};
+
+/// A hitting face that may touch a target block.
+struct Candidate {
+    int hit_block = 0;
+    int hit_face = 0;
+    int target_block = 0;
+    std::vector<Anchor> anchors;  ///< one per hitting point of the face
+    std::vector<PointForce> forces;  ///< this step's forces, spread after every candidate is done
+    ContactTotals totals;            ///< this step's energies and counts
+};
+
+
 /// The contact state of a world.
 class ContactSet {
 public:
@@ -43,7 +54,9 @@ public:
     void configure(const ContactLaw& law, double margin);
     /// rebuild the candidate list from bounding boxes; anchors of surviving candidates are kept
     void refresh(std::vector<Block>& blocks);
-    /// add contact forces to the blocks' node forces; dt (s) scales the dashpot dissipation
+    /// add contact forces to the blocks' node forces; dt (s) scales the dashpot dissipation.
+    /// Candidates are evaluated on every core, then spread in their fixed order (same bits on
+    /// any number of threads)
     ContactTotals apply(std::vector<Block>& blocks, double dt);
     /// candidate hitting faces
     const std::vector<Candidate>& candidates() const { return candidates_; }

@@ -119,3 +119,28 @@ TEST_CASE("a contact too soft for its load stops the run instead of letting a bl
     // it stopped as the penetration passed 0.25 m, not after the block fell through
     CHECK(b->sample().blocks[0].position.z() > 0.5 - 0.3);
 }
+
+#ifdef _OPENMP
+#include <omp.h>
+TEST_CASE("a meshed block in contact gives the same bits on 1 and 2 threads", "[dem][determinism]") {
+    // elements and contact candidates are shared between the cores, their forces gathered in a
+    // fixed order: the thread count must not change a single bit
+    Scene s = test::stone_scene(0.6);
+    test::add_box(s, "A", Vec3(1, 1, 1), Vec3(0.05, 0, 0.5), false);
+    test::add_box(s, "B", Vec3(1, 1, 1), Vec3(0, 0, -0.5), true);
+    s.blocks[0].model = BlockModel::deformable;
+    s.blocks[0].mesh.divisions = {6, 6, 6};
+    s.blocks[0].angular_velocity = Vec3(0.2, 0.1, 0.0);
+    auto run = [&](int threads) {
+        omp_set_num_threads(threads);
+        auto b = test::build_dem(s);
+        for (int i = 0; i < 300; ++i) b->step();
+        Sample x = b->sample();
+        return std::vector<double>{x.blocks[0].position.x(), x.blocks[0].position.z(), x.blocks[0].orientation.w(),
+                                   x.energy.contact, x.energy.strain, x.energy.dissipated, double(x.contacts)};
+    };
+    const auto one = run(1), two = run(2);
+    omp_set_num_threads(2);
+    CHECK(one == two);
+}
+#endif
