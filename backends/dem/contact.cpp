@@ -99,8 +99,11 @@ double reduced_mass(const Block& a, const Block& b) {
 
 ContactTotals ContactSet::apply(std::vector<Block>& blocks, double dt) {
     const long count = long(candidates_.size());
-    // below 64 candidates the fork costs more than it saves: one thread spreads as it goes
-    const bool parallel = count >= 64;
+    // below a thousand hitting points the fork costs more than it saves (a single block on
+    // its base has a few hundred): one thread then spreads the forces as it goes
+    size_t points = 0;
+    for (const auto& c : candidates_) points += c.anchors.size();
+    const bool parallel = points >= 1000;
 #pragma omp parallel if (parallel)
     {
     // per thread: the geometry of the (hitting, target) pair of the candidates it is on
@@ -110,7 +113,7 @@ ContactTotals ContactSet::apply(std::vector<Block>& blocks, double dt) {
     std::array<char, 6> target_ok{};  // per target side: it is the target for that side
     double flush_tol = 0.0, closer_tol = 0.0;
     std::array<ParallelogramFrame, 6> frames;   // rigid parallelogram target sides: closed-form projection
-#pragma omp for schedule(static, 1)
+#pragma omp for schedule(static)   // contiguous chunks: no two threads write one cache line
     for (long ci = 0; ci < count; ++ci) {
         Candidate& c = candidates_[size_t(ci)];
         c.forces.clear();
