@@ -7,6 +7,10 @@
 
 #include "broad_phase.hpp"
 
+#ifdef _OPENMP
+#include <omp.h>
+#endif
+
 namespace cairn::dem {
 
 void ContactSet::configure(const ContactLaw& law, double margin) {
@@ -99,22 +103,55 @@ double reduced_mass(const Block& a, const Block& b) {
 
 ContactTotals ContactSet::apply(std::vector<Block>& blocks, double dt) {
     const long count = long(candidates_.size());
-    // below a thousand hitting points the fork costs more than it saves (a single block on
-    // its base has a few hundred): one thread then spreads the forces as it goes
+    // below a thousand hitting points a parallel region costs more than it saves (a single block
+    // on its base has a few hundred): one thread then spreads the forces as it goes
     size_t points = 0;
     for (const auto& c : candidates_) points += c.anchors.size();
-    const bool parallel = points >= 1000;
-#pragma omp parallel if (parallel)
-    {
-    // per thread: the geometry of the (hitting, target) pair of the candidates it is on
+    if (points >= 1000) {
+#pragma omp parallel
+        {
+            long lo = 0, hi = count;
+#ifdef _OPENMP
+            // contiguous chunks: no two threads write one cache line
+            const long t = omp_get_thread_num(), nt = omp_get_num_threads();
+            lo = count * t / nt;
+            hi = count * (t + 1) / nt;
+#endif
+            evaluate(blocks, dt, lo, hi, true);
+        }
+    } else {
+        evaluate(blocks, dt, 0, count, false);
+    }
+    // spread the kept forces and add up, in the candidates' order
+    ContactTotals tot;
+    for (auto& c : candidates_) {
+        Block& hb = blocks[c.hit_block];
+        Block& tb = blocks[c.target_block];
+        for (const auto& p : c.forces) {
+            spread(hb, c.hit_face, hb.hits[c.hit_face][p.point].xi, p.force);
+            spread(tb, p.target_face, p.target_xi, -p.force);
+        }
+        tot.stored += c.totals.stored;
+        tot.dissipated += c.totals.dissipated;
+        tot.active += c.totals.active;
+        if (c.totals.worst_depth > tot.worst_depth) {
+            tot.worst_depth = c.totals.worst_depth;
+            tot.worst_hit = c.totals.worst_hit;
+            tot.worst_target = c.totals.worst_target;
+        }
+    }
+    return tot;
+}
+
+void ContactSet::evaluate(std::vector<Block>& blocks, double dt, long begin, long end, bool keep_forces) {
+    // the geometry of the (hitting, target) pair of the candidates at hand
     int cached_h = -1, cached_t = -1;
     TargetSides sides;
     std::array<int, 6> best_side{};   // per target side: the hitting block's side most opposed to it
     std::array<char, 6> target_ok{};  // per target side: it is the target for that side
     double flush_tol = 0.0, closer_tol = 0.0;
     std::array<ParallelogramFrame, 6> frames;   // rigid parallelogram target sides: closed-form projection
-#pragma omp for schedule(static)   // contiguous chunks: no two threads write one cache line
-    for (long ci = 0; ci < count; ++ci) {
+    for (long ci = begin; ci < end; ++ci) {
         Candidate& c = candidates_[size_t(ci)];
         c.forces.clear();
         c.totals = ContactTotals{};
@@ -240,7 +277,7 @@ ContactTotals ContactSet::apply(std::vector<Block>& blocks, double dt) {
             } else {
                 anchor.side = -1;
             }
-            if (parallel) {
+            if (keep_forces) {
                 c.forces.push_back({int(k), face, pr.xi, fn * n + fs});
             } else {
                 spread(hb, c.hit_face, pts[k].xi, fn * n + fs);
@@ -249,26 +286,6 @@ ContactTotals ContactSet::apply(std::vector<Block>& blocks, double dt) {
             ++tot.active;
         }
     }
-    }
-    // spread and add up in the candidates' order
-    ContactTotals tot;
-    for (auto& c : candidates_) {
-        Block& hb = blocks[c.hit_block];
-        Block& tb = blocks[c.target_block];
-        for (const auto& p : c.forces) {
-            spread(hb, c.hit_face, hb.hits[c.hit_face][p.point].xi, p.force);
-            spread(tb, p.target_face, p.target_xi, -p.force);
-        }
-        tot.stored += c.totals.stored;
-        tot.dissipated += c.totals.dissipated;
-        tot.active += c.totals.active;
-        if (c.totals.worst_depth > tot.worst_depth) {
-            tot.worst_depth = c.totals.worst_depth;
-            tot.worst_hit = c.totals.worst_hit;
-            tot.worst_target = c.totals.worst_target;
-        }
-    }
-    return tot;
 }
 
 }  // namespace cairn::dem

@@ -64,6 +64,9 @@ public:
     double margin() const { return margin_; }
 
 private:
+    /// candidates [begin, end): forces (kept in the candidate, or spread at once), anchors, totals
+    void evaluate(std::vector<Block>& blocks, double dt, long begin, long end, bool keep_forces);
+
     ContactLaw law_;
     double margin_ = 0.0;
     std::vector<Candidate> candidates_;
