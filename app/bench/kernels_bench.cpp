@@ -18,6 +18,7 @@
 #include "dem/deformable/hex8_batch.hpp"
 #include "dem/mesh.hpp"
 #include "geometry/hexahedron.hpp"
+#include "scene/scene_builder.hpp"
 
 using namespace cairn;
 
@@ -74,18 +75,11 @@ Scene cube_scene(int n, bool on_base) {
     s.contact.kn = s.contact.ks = 3e7;
     s.contact.friction = 0.6;
     s.run.duration = 1.0;
-    for (int i = 0; i < (on_base ? 2 : 1); ++i) {
-        BlockDef b;
-        b.name = i == 0 ? "A" : "B";
-        b.size = Vec3(1, 1, 1);
-        b.corners = box_corners(b.size);
-        b.position = Vec3(0, 0, i == 0 ? 0.5 : -0.5);
-        b.fixed = i == 1;
-        b.model = i == 0 ? BlockModel::deformable : BlockModel::rigid;
-        b.mesh.divisions = {n, n, n};
-        if (!on_base) b.angular_velocity = Vec3(1.0, 2.0, 0.5);
-        s.blocks.push_back(b);
-    }
+    BlockDef& a = s.blocks[add_box(s, "A", Vec3(1, 1, 1), Vec3(0, 0, 0.5), false)];
+    a.model = BlockModel::deformable;
+    a.mesh.divisions = {n, n, n};
+    if (on_base) add_box(s, "B", Vec3(1, 1, 1), Vec3(0, 0, -0.5), true);
+    else a.angular_velocity = Vec3(1.0, 2.0, 0.5);
     return s;
 }
 

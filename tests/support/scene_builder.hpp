@@ -7,6 +7,7 @@
 
 #include "geometry/hexahedron.hpp"
 #include "scene/scene.hpp"
+#include "scene/scene_builder.hpp"
 
 namespace cairn::test {
 
@@ -23,20 +24,8 @@ inline Scene stone_scene(double friction = 0.6) {
     return s;
 }
 
-/// add a box block; returns its index. `position` is the box centre, m
-inline int add_box(Scene& s, const std::string& name, const Vec3& size, const Vec3& position,
-                   bool fixed, const Quat& orientation = Quat::Identity()) {
-    BlockDef b;
-    b.name = name;
-    b.shape = Shape::box;
-    b.size = size;
-    b.corners = box_corners(size);
-    b.position = position;
-    b.orientation = orientation;
-    b.fixed = fixed;
-    s.blocks.push_back(b);
-    return int(s.blocks.size()) - 1;
-}
+/// add a box block (cairn::add_box); `position` is the box centre, m
+using cairn::add_box;
 
 /// a box of `size` rotated by `angle` (rad) about the world y axis through the point `pivot`,
 /// having first been placed with its centre at `position`

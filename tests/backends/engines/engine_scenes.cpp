@@ -4,6 +4,7 @@
 
 #include "geometry/hexahedron.hpp"
 #include "registry.hpp"
+#include "scene/scene_builder.hpp"
 
 namespace cairn::test {
 
@@ -20,26 +21,10 @@ Scene base_scene(const std::string& name) {
     return s;
 }
 
-static int add_block(Scene& scene, const std::string& name, Shape shape, const Vec3& size,
-                     const Vec3& centre, bool fixed) {
-    BlockDef b;
-    b.name = name;
-    b.shape = shape;
-    b.size = size;
-    b.corners = box_corners(size);
-    b.position = centre;
-    b.fixed = fixed;
-    scene.blocks.push_back(b);
-    return static_cast<int>(scene.blocks.size()) - 1;
-}
-
-int add_box(Scene& scene, const std::string& name, const Vec3& size, const Vec3& centre, bool fixed) {
-    return add_block(scene, name, Shape::box, size, centre, fixed);
-}
-
 int add_hexahedron_box(Scene& scene, const std::string& name, const Vec3& size, const Vec3& centre,
                        bool fixed) {
-    int i = add_block(scene, name, Shape::hexahedron, size, centre, fixed);
+    int i = cairn::add_box(scene, name, size, centre, fixed);
+    scene.blocks[i].shape = Shape::hexahedron;
     // shift the corners so that the block frame origin is a corner, not the centre:
     // the backend must then find the centre of mass itself
     for (auto& c : scene.blocks[i].corners) c += 0.5 * size;

@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "scene/scene.hpp"
+#include "scene/scene_builder.hpp"
 
 namespace cairn::test {
 
@@ -12,7 +13,7 @@ namespace cairn::test {
 Scene base_scene(const std::string& name);
 
 /// add an axis-aligned box with its centre at `centre` (m); returns its index
-int add_box(Scene& scene, const std::string& name, const Vec3& size, const Vec3& centre, bool fixed);
+using cairn::add_box;
 
 /// add a box-shaped block given as a general hexahedron (Shape::hexahedron); returns its index
 int add_hexahedron_box(Scene& scene, const std::string& name, const Vec3& size, const Vec3& centre,
