@@ -8,7 +8,9 @@
 #include "commands.hpp"
 #include "error.hpp"
 #include "output/atomic_write.hpp"
+#include "output/staged_dir.hpp"
 #include "registry.hpp"
+#include "run/stop.hpp"
 #include "report/figures.hpp"
 #include "bench/bench_report.hpp"
 #include "report/validation_report.hpp"
@@ -79,22 +81,26 @@ int validate_command(const ValidateOptions& options) {
         return kExitBadInput;
     }
 
-    // validate owns these outputs under DIR and replaces them; nothing else in DIR is touched
-    const fs::path dir = options.out_dir;
-    std::error_code ec;
-    if (fs::exists(dir, ec) && !fs::is_directory(dir, ec)) {
-        std::cerr << "error: output path " << dir.string() << " exists and is not a directory\n";
+    // the new report is built beside the old one and swapped in whole once complete: killed or
+    // interrupted, DIR keeps the previous complete report. Validate owns these entries of DIR; the
+    // rest (the study/ and bench/ written there by other commands) is carried over.
+    std::unique_ptr<StagedDir> staged;
+    try {
+        staged = std::make_unique<StagedDir>(options.out_dir, true);
+        staged->carry_over({"runs", "figures", "summary.csv", "report.md", "index.html"});
+    } catch (const Error& e) {
+        std::cerr << "error: " << e.what() << "\n";
         return kExitBadInput;
     }
-    fs::remove_all(dir / "runs", ec);
-    fs::remove_all(dir / "figures", ec);
-    fs::create_directories(dir, ec);
-    if (ec) {
-        std::cerr << "error: cannot create " << dir.string() << ": " << ec.message() << "\n";
-        return kExitFailure;
-    }
+    const fs::path dir = staged->path();
+    plan.out_dir = dir.string();
+    plan.final_dir = options.out_dir;
+    std::error_code ec;
 
     validation::run_plan(plan, [](const std::string& name) { return make_backend(name); });
+    if (stop_requested()) {
+        return interrupted_keeping("report", options.out_dir);
+    }
 
     report::ReportContext ctx;
     for (const auto& b : available_backends())
@@ -120,10 +126,14 @@ int validate_command(const ValidateOptions& options) {
     write_text_atomic((dir / "summary.csv").string(), report::summary_csv(plan.cases));
     write_text_atomic((dir / "report.md").string(), report::to_markdown(doc));
     write_text_atomic((dir / "index.html").string(), report::to_html(doc));
+    if (stop_requested()) {
+        return interrupted_keeping("report", options.out_dir);
+    }
+    staged->commit();
 
     std::cout << report::verdict_text(plan.cases);
     if (!figures.note.empty()) std::cout << "figures: " << figures.note << "\n";
-    std::printf("\nreport: %s (and report.md, summary.csv); %.1f s wall\n", (dir / "index.html").string().c_str(),
+    std::printf("\nreport: %s (and report.md, summary.csv); %.1f s wall\n", (fs::path(options.out_dir) / "index.html").string().c_str(),
                 ctx.wall_seconds);
     return kExitOk;
 }
