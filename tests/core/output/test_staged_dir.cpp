@@ -1,0 +1,127 @@
+// a result directory written as a set: staged beside DIR, swapped in whole, or not at all
+#include <catch2/catch.hpp>
+
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include "error.hpp"
+#include "output/staged_dir.hpp"
+
+using namespace cairn;
+namespace fs = std::filesystem;
+using Catch::Matchers::Contains;
+
+namespace {
+
+fs::path scratch(const std::string& name) {
+    const auto dir = fs::path(CAIRN_BINARY_DIR) / "test_scratch" / "staged_dir" / name;
+    fs::remove_all(dir);
+    fs::create_directories(dir);
+    return dir;
+}
+
+void put(const fs::path& p, const std::string& text) {
+    fs::create_directories(p.parent_path());
+    std::ofstream(p, std::ios::binary) << text;
+}
+
+std::string get(const fs::path& p) {
+    std::ifstream in(p, std::ios::binary);
+    std::stringstream ss;
+    ss << in.rdbuf();
+    return ss.str();
+}
+
+/// the names in `dir`, sorted
+std::vector<std::string> names(const fs::path& dir) {
+    std::vector<std::string> v;
+    for (const auto& e : fs::directory_iterator(dir)) v.push_back(e.path().filename().string());
+    std::sort(v.begin(), v.end());
+    return v;
+}
+
+}  // namespace
+
+TEST_CASE("a staged directory appears only on commit", "[output]") {
+    const fs::path root = scratch("new");
+    const fs::path dir = root / "sub" / "run";   // missing parents are created
+    {
+        StagedDir s(dir.string(), false);
+        CHECK(s.path().parent_path() == fs::absolute(dir).parent_path());
+        CHECK(s.path().filename().string() == "run.tmp-" + std::to_string(::getpid()));
+        put(s.path() / "a.txt", "new\n");
+        CHECK_FALSE(fs::exists(dir));
+        s.commit();
+    }
+    CHECK(get(dir / "a.txt") == "new\n");
+    CHECK(names(root / "sub") == std::vector<std::string>{"run"});
+}
+
+TEST_CASE("a commit swaps the whole set; without it the old set stays", "[output]") {
+    const fs::path root = scratch("replace");
+    const fs::path dir = root / "run";
+    put(dir / "a.txt", "old a\n");
+    put(dir / "b.txt", "old b\n");
+    {
+        StagedDir s(dir.string(), true);
+        put(s.path() / "a.txt", "new a\n");
+        // not committed: discarded on scope exit
+    }
+    CHECK(get(dir / "a.txt") == "old a\n");
+    CHECK(names(root) == std::vector<std::string>{"run"});
+    {
+        StagedDir s(dir.string(), true);
+        put(s.path() / "a.txt", "new a\n");
+        s.commit();
+    }
+    CHECK(get(dir / "a.txt") == "new a\n");
+    CHECK_FALSE(fs::exists(dir / "b.txt"));   // the old set is gone, not merged
+    CHECK(names(root) == std::vector<std::string>{"run"});
+}
+
+TEST_CASE("a staged directory refuses before any work what it cannot replace", "[output]") {
+    const fs::path root = scratch("refuse");
+    put(root / "run" / "a.txt", "old\n");
+    CHECK_THROWS_WITH(StagedDir((root / "run").string(), false), Contains("not empty") && Contains("--force"));
+    put(root / "file", "x");
+    CHECK_THROWS_WITH(StagedDir((root / "file").string(), true), Contains("not a directory"));
+    // a parent that is a file: the staging directory cannot be created
+    CHECK_THROWS_AS(StagedDir((root / "file" / "run").string(), true), Error);
+    CHECK(names(root) == std::vector<std::string>{"file", "run"});
+    // an empty directory is not a result: replaced without force
+    fs::create_directories(root / "empty");
+    StagedDir s((root / "empty").string(), false);
+    s.commit();
+}
+
+TEST_CASE("carry_over keeps the entries a command does not own", "[output]") {
+    const fs::path root = scratch("carry");
+    const fs::path dir = root / "validation";
+    put(dir / "report.md", "old report\n");
+    put(dir / "runs" / "x" / "trajectory.csv", "old\n");
+    put(dir / "study" / "inertia.md", "study\n");
+    put(dir / "bench.tmp-99999999" / "junk", "a staging leftover\n");
+    StagedDir s(dir.string(), true);
+    s.carry_over({"report.md", "runs"});
+    put(s.path() / "report.md", "new report\n");
+    s.commit();
+    CHECK(get(dir / "report.md") == "new report\n");
+    CHECK(get(dir / "study" / "inertia.md") == "study\n");
+    CHECK(names(dir) == std::vector<std::string>{"report.md", "study"});
+}
+
+TEST_CASE("staging directories of processes that died are removed by the next one", "[output]") {
+    const fs::path root = scratch("stale");
+    const pid_t child = ::fork();
+    if (child == 0) ::_exit(0);
+    ::waitpid(child, nullptr, 0);   // a pid that no longer exists
+    put(root / ("run.tmp-" + std::to_string(child)) / "trajectory.csv", "half\n");
+    put(root / ("run.tmp-" + std::to_string(::getppid())) / "x", "a live process's\n");
+    StagedDir s((root / "run").string(), false);
+    CHECK_FALSE(fs::exists(root / ("run.tmp-" + std::to_string(child))));
+    CHECK(fs::exists(root / ("run.tmp-" + std::to_string(::getppid()))));
+}
