@@ -1,0 +1,45 @@
+// `cairn run` outputs: an output directory that cannot be written is refused before the run, and a
+// scene path that is not UTF-8 still gives a complete, readable result
+#include <catch2/catch.hpp>
+
+#include <nlohmann/json.hpp>
+
+#include "cairn_process.hpp"
+#include "cairn_spawn.hpp"
+
+namespace fs = std::filesystem;
+using namespace cairn::test;
+using Catch::Matchers::Contains;
+
+TEST_CASE("cairn run refuses an --out it cannot write before the run", "[app]") {
+    const fs::path dir = fresh_dir("out_unwritable");
+    { std::ofstream(dir / "file") << "x"; }
+    // a run of hours if it started: the refusal must come first
+    const pid_t pid = spawn_cairn({"run", "paper/stability", "--backend", "dem", "-q", "--set", "run.duration=1e5",
+                                   "--out", (dir / "file" / "run").string()},
+                                  dir);
+    const Ended e = wait_for(pid);
+    CHECK(e.exit_code == 2);
+    CHECK_THAT(read_file(dir / "stderr.txt"), Contains("error: output directory") && Contains("file/run"));
+    const auto d = wait_for(spawn_cairn({"run", "paper/stability", "--backend", "dem", "-q", "--out",
+                                         (dir / "file").string(), "--force"},
+                                        dir));
+    CHECK(d.exit_code == 2);
+    CHECK_THAT(read_file(dir / "stderr.txt"), Contains("exists and is not a directory"));
+}
+
+TEST_CASE("cairn run from a scene path that is not UTF-8 writes a complete run.json", "[app]") {
+    const fs::path dir = fresh_dir("out_latin1");
+    const fs::path scene = dir / "sc\xe8ne.toml";   // Latin-1 è: not UTF-8
+    fs::copy_file(fs::path(CAIRN_SOURCE_DIR) / "scenarios" / "paper" / "stability.toml", scene);
+    const fs::path out = dir / "run";
+    const auto e = wait_for(spawn_cairn({"run", scene.string(), "--backend", "dem", "-q", "--set", "run.duration=0.05",
+                                         "--out", out.string()},
+                                        dir));
+    CHECK(e.exit_code == 0);
+    REQUIRE(fs::exists(out / "trajectory.csv"));
+    const auto record = nlohmann::json::parse(read_file(out / "run.json"));
+    CHECK(record["status"] == "completed");
+    // the bad byte is replaced by U+FFFD, the rest of the path kept
+    CHECK_THAT(record["scene"]["path"].get<std::string>(), Contains("sc\xef\xbf\xbdne.toml"));
+}
