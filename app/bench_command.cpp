@@ -111,7 +111,7 @@ int bench_command(const std::string& which, const BenchOptions& o) {
     std::unique_ptr<StagedDir> staged;
     try {
         staged = std::make_unique<StagedDir>(o.out_dir, true);
-        staged->carry_over({});
+        staged->carry_over({}, StagedDir::Carry::copy);
     } catch (const Error& e) {
         std::cerr << "error: " << e.what() << "\n";
         return kExitBadInput;

@@ -87,6 +87,8 @@ JobOutcome execute_run(const RunJob& job) {
         if (job.contact != "rigid" && job.contact != "matched")
             throw Error("--contact " + job.contact + ": expected rigid or matched");
         out = std::make_unique<StagedDir>(job.out_dir, job.force);
+        // --force replaces a run's own files; anything else in DIR comes along (hard links)
+        out->carry_over({kTrajectory, kPartial, kRecord}, StagedDir::Carry::link);
     } catch (const Error& e) {
         o.status = JobStatus::input_error;
         o.message = e.what();

@@ -37,7 +37,7 @@ int study_inertia_command(const StudyInertiaOptions& o) {
     std::unique_ptr<StagedDir> staged;
     try {
         staged = std::make_unique<StagedDir>(o.out_dir, true);
-        staged->carry_over({"inertia.csv", "inertia.md", "inertia.html", "figures"});
+        staged->carry_over({"inertia.csv", "inertia.md", "inertia.html", "figures"}, StagedDir::Carry::copy);
     } catch (const Error& e) {
         std::cerr << "error: " << e.what() << "\n";
         return kExitBadInput;

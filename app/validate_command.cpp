@@ -87,7 +87,7 @@ int validate_command(const ValidateOptions& options) {
     std::unique_ptr<StagedDir> staged;
     try {
         staged = std::make_unique<StagedDir>(options.out_dir, true);
-        staged->carry_over({"runs", "figures", "summary.csv", "report.md", "index.html"});
+        staged->carry_over({"runs", "figures", "summary.csv", "report.md", "index.html"}, StagedDir::Carry::copy);
     } catch (const Error& e) {
         std::cerr << "error: " << e.what() << "\n";
         return kExitBadInput;

@@ -82,6 +82,7 @@ StagedDir::StagedDir(const std::string& final_dir, bool replace) {
     if (::mkdir(staging_.c_str(), 0777) != 0)
         throw Error("output directory " + final_dir + ": cannot write into " + parent.string() + ": " +
                     std::strerror(errno));
+    if (fs::is_directory(st)) fs::permissions(staging_, st.permissions(), ec);   // DIR keeps its mode
 }
 
 StagedDir::~StagedDir() { discard(); }
@@ -93,7 +94,7 @@ void StagedDir::discard() {
     fs::remove_all(staging_, ec);
 }
 
-void StagedDir::carry_over(const std::vector<std::string>& owned) {
+void StagedDir::carry_over(const std::vector<std::string>& owned, Carry how) {
     std::error_code ec;
     if (!fs::is_directory(final_, ec)) return;
     for (const auto& e : fs::directory_iterator(final_)) {
@@ -102,7 +103,15 @@ void StagedDir::carry_over(const std::vector<std::string>& owned) {
         bool skip = false;
         for (const auto& o : owned) skip = skip || o == name;
         if (skip) continue;
-        fs::copy(e.path(), staging_ / name, fs::copy_options::recursive | fs::copy_options::copy_symlinks);
+        const auto opts = fs::copy_options::recursive | fs::copy_options::copy_symlinks |
+                          (how == Carry::link ? fs::copy_options::create_hard_links : fs::copy_options::none);
+        fs::copy(e.path(), staging_ / name, opts, ec);
+        if (ec && how == Carry::link) {   // a file system without hard links
+            fs::remove_all(staging_ / name, ec);
+            fs::copy(e.path(), staging_ / name, fs::copy_options::recursive | fs::copy_options::copy_symlinks);
+        } else if (ec) {
+            throw std::runtime_error("cannot copy " + e.path().string() + " beside the new result: " + ec.message());
+        }
     }
 }
 

@@ -28,10 +28,16 @@ public:
     /// the directory the result goes to
     const std::filesystem::path& final_path() const { return final_; }
 
-    /// copy every entry of the current DIR into the staging directory, except the names in `owned`
-    /// (which the command writes afresh) and staging leftovers; for commands that own only part of
-    /// DIR (validate keeps the study/ and bench/ written there by other commands)
-    void carry_over(const std::vector<std::string>& owned);
+    /// How carried entries are brought over.
+    enum class Carry {
+        link,   ///< hard links (no data copied); for entries the command never writes to
+        copy,   ///< copies; for entries the command may rewrite in place (an appended CSV, figures)
+    };
+
+    /// bring every entry of the current DIR into the staging directory, except the names in
+    /// `owned` (which the command writes afresh) and staging leftovers: the commands own only part
+    /// of DIR (a run its three files, validate its report beside the study/ and bench/ of others)
+    void carry_over(const std::vector<std::string>& owned, Carry how);
 
     /// fsync the staging tree, swap it into place, fsync the parent and remove the old content;
     /// throws std::runtime_error when the swap fails (DIR is then untouched)

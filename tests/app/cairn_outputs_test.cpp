@@ -43,3 +43,20 @@ TEST_CASE("cairn run from a scene path that is not UTF-8 writes a complete run.j
     // the bad byte is replaced by U+FFFD, the rest of the path kept
     CHECK_THAT(record["scene"]["path"].get<std::string>(), Contains("sc\xef\xbf\xbdne.toml"));
 }
+
+TEST_CASE("cairn run --force replaces a run's files and keeps the others in the directory", "[app]") {
+    const fs::path dir = fresh_dir("out_force_keeps");
+    const fs::path out = dir / "run";
+    const std::vector<std::string> run{"run", "paper/stability", "--backend", "dem", "-q", "--out", out.string()};
+    auto with = [&](std::vector<std::string> a, const std::vector<std::string>& b) {
+        a.insert(a.end(), b.begin(), b.end());
+        return a;
+    };
+    REQUIRE(wait_for(spawn_cairn(with(run, {"--set", "run.duration=0.05"}), dir)).exit_code == 0);
+    const std::string first = read_file(out / "trajectory.csv");
+    { std::ofstream(out / "notes.txt") << "my notes\n"; }
+    const auto e = wait_for(spawn_cairn(with(run, {"--force", "--set", "run.duration=0.02"}), dir));
+    CHECK(e.exit_code == 0);
+    CHECK(read_file(out / "notes.txt") == "my notes\n");
+    CHECK(read_file(out / "trajectory.csv") != first);
+}

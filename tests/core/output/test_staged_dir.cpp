@@ -106,7 +106,7 @@ TEST_CASE("carry_over keeps the entries a command does not own", "[output]") {
     put(dir / "study" / "inertia.md", "study\n");
     put(dir / "bench.tmp-99999999" / "junk", "a staging leftover\n");
     StagedDir s(dir.string(), true);
-    s.carry_over({"report.md", "runs"});
+    s.carry_over({"report.md", "runs"}, StagedDir::Carry::copy);
     put(s.path() / "report.md", "new report\n");
     s.commit();
     CHECK(get(dir / "report.md") == "new report\n");
@@ -124,4 +124,24 @@ TEST_CASE("staging directories of processes that died are removed by the next on
     StagedDir s((root / "run").string(), false);
     CHECK_FALSE(fs::exists(root / ("run.tmp-" + std::to_string(child))));
     CHECK(fs::exists(root / ("run.tmp-" + std::to_string(::getppid()))));
+}
+
+TEST_CASE("carry_over by hard links brings a directory's other files without copying them", "[output]") {
+    const fs::path root = scratch("carry_link");
+    const fs::path dir = root / "run";
+    put(dir / "trajectory.csv", "old\n");
+    put(dir / "notes.txt", "mine\n");
+    put(dir / "sub" / "data.bin", "more\n");
+    fs::permissions(dir, fs::perms::owner_all | fs::perms::group_read | fs::perms::group_exec);
+    StagedDir s(dir.string(), true);
+    s.carry_over({"trajectory.csv"}, StagedDir::Carry::link);
+    CHECK(fs::hard_link_count(s.path() / "notes.txt") == 2);   // one file, two names
+    CHECK(fs::hard_link_count(s.path() / "sub" / "data.bin") == 2);
+    CHECK(fs::status(s.path()).permissions() == fs::status(dir).permissions());
+    put(s.path() / "trajectory.csv", "new\n");
+    s.commit();
+    CHECK(names(dir) == std::vector<std::string>{"notes.txt", "sub", "trajectory.csv"});
+    CHECK(get(dir / "notes.txt") == "mine\n");
+    CHECK(fs::hard_link_count(dir / "notes.txt") == 1);   // the old name went with the old directory
+    CHECK(get(dir / "trajectory.csv") == "new\n");
 }
