@@ -63,8 +63,12 @@ StagedDir::StagedDir(const std::string& final_dir, bool replace) {
     fs::path p = fs::absolute(fs::path(final_dir)).lexically_normal();
     if (!p.has_filename()) p = p.parent_path();
     if (p == p.root_path()) throw Error("output directory " + final_dir + ": cannot replace the root");
-    final_ = p;
     std::error_code ec;
+    if (fs::is_symlink(fs::symlink_status(p, ec))) {   // a link to a directory: swap where it points
+        p = fs::canonical(p, ec);
+        if (ec) throw Error("output directory " + final_dir + ": " + ec.message());
+    }
+    final_ = p;
     const auto st = fs::symlink_status(final_, ec);
     if (fs::exists(st)) {
         if (!fs::is_directory(st))

@@ -145,3 +145,15 @@ TEST_CASE("carry_over by hard links brings a directory's other files without cop
     CHECK(fs::hard_link_count(dir / "notes.txt") == 1);   // the old name went with the old directory
     CHECK(get(dir / "trajectory.csv") == "new\n");
 }
+
+TEST_CASE("a staged directory given as a symbolic link replaces the directory it points to", "[output]") {
+    const fs::path root = scratch("symlink");
+    put(root / "real" / "a.txt", "old\n");
+    fs::create_directory_symlink("real", root / "link");
+    StagedDir s((root / "link").string(), true);
+    put(s.path() / "a.txt", "new\n");
+    s.commit();
+    CHECK(fs::is_symlink(root / "link"));
+    CHECK(get(root / "real" / "a.txt") == "new\n");
+    CHECK(names(root) == std::vector<std::string>{"link", "real"});
+}
