@@ -118,7 +118,6 @@ RunResult run_scene(Backend& backend, const Scene& scene, const RunOptions& opti
 
     // hand a finite sample to the sink and keep the running summary
     auto keep = [&](const Sample& s) {
-        if (r.sample_count == 0) r.initial_total = s.energy.total();
         ++r.sample_count;
         r.final_time = s.t;
         r.final_energy = s.energy;

@@ -81,6 +81,50 @@ std::vector<double> kill_delays(int count, double run_seconds, unsigned seed) {
     return d;
 }
 
+/// put a copy of `old` at `target`, start `cairn args...`, SIGKILL it after `delay` s; returns what
+/// `target` holds then
+std::map<std::string, std::string> kill_during(const Strings& args, const fs::path& old, const fs::path& target,
+                                               double delay, const fs::path& scratch) {
+    fs::remove_all(target);
+    fs::copy(old, target, fs::copy_options::recursive);
+    const pid_t pid = spawn_cairn(args, scratch);
+    std::this_thread::sleep_for(std::chrono::duration<double>(delay));
+    ::kill(pid, SIGKILL);
+    wait_for(pid);
+    return tree(target);
+}
+
+/// the two complete results a killed command may leave: the old one, and the one it computes
+struct Known {
+    Strings new_args;                           ///< the command of the new result, without --out
+    double seconds = 0.0;                       ///< its wall time, s
+    std::map<std::string, std::string> old_tree, new_tree;
+};
+
+/// run `base` with --set `old_set` into dir/old and with --set `new_set` into dir/new
+Known known_results(const Strings& base, const std::string& old_set, const std::string& new_set, const fs::path& dir) {
+    Known k;
+    k.new_args = base + Strings{"--set", new_set};
+    run_ok(base + Strings{"--set", old_set, "--out", (dir / "old").string()}, dir);
+    k.seconds = run_ok(k.new_args + Strings{"--out", (dir / "new").string()}, dir);
+    k.old_tree = tree(dir / "old");
+    k.new_tree = tree(dir / "new");
+    return k;
+}
+
+/// start `cairn args...`, wait until it writes `staged` (a path inside its staging directory
+/// "<name>.tmp-<pid>" under `dir`) and a little more, send it `sig`; how it ended
+Ended signal_when_staged(const Strings& args, const std::string& name, const std::string& staged, int sig,
+                         const fs::path& dir) {
+    const pid_t pid = spawn_cairn(args, dir);
+    const bool started = wait_until_exists(dir / (name + ".tmp-" + std::to_string(pid)) / staged);
+    std::this_thread::sleep_for(std::chrono::milliseconds(200));
+    ::kill(pid, sig);
+    const Ended e = wait_for(pid);
+    REQUIRE(started);
+    return e;
+}
+
 /// one thread per child: the kill points are spread over the run's length, which two OpenMP threads
 /// waiting on a core shared with other jobs can stretch tenfold (results do not depend on it)
 const bool kOneThread = ::setenv("OMP_NUM_THREADS", "1", 1) == 0;
@@ -89,26 +133,17 @@ const bool kOneThread = ::setenv("OMP_NUM_THREADS", "1", 1) == 0;
 
 TEST_CASE("cairn run killed at random moments leaves the old or the new result, never a mix", "[app][kill]") {
     const fs::path dir = fresh_dir("kill_run");
-    const Strings run{"run", "paper/stability", "--backend", "dem", "-q"};
-    const Strings old_args = run + Strings{"--set", "run.duration=5"};
-    const Strings new_args = run + Strings{"--set", "run.duration=10"};
-    run_ok(old_args + Strings{"--out", (dir / "old").string()}, dir);
-    const double seconds = run_ok(new_args + Strings{"--out", (dir / "new").string()}, dir);
-    const auto old_tree = tree(dir / "old");
-    const auto new_tree = tree(dir / "new");
+    const Known k = known_results({"run", "paper/stability", "--backend", "dem", "-q"}, "run.duration=5",
+                                  "run.duration=10", dir);
+    const auto& [new_args, seconds, old_tree, new_tree] = k;
     REQUIRE(keys(old_tree) == Strings{"run.json", "trajectory.csv"});
     REQUIRE(old_tree.at("trajectory.csv") != new_tree.at("trajectory.csv"));
 
     const fs::path target = dir / "target";
     int saw_old = 0, saw_new = 0;
     for (double delay : kill_delays(16, seconds, 20261123u)) {
-        fs::remove_all(target);
-        fs::copy(dir / "old", target, fs::copy_options::recursive);
-        const pid_t pid = spawn_cairn(new_args + Strings{"--force", "--out", target.string()}, dir);
-        std::this_thread::sleep_for(std::chrono::duration<double>(delay));
-        ::kill(pid, SIGKILL);
-        wait_for(pid);
-        const auto t = tree(target);
+        const auto t = kill_during(new_args + Strings{"--force", "--out", target.string()}, dir / "old", target,
+                                   delay, dir);
         INFO("killed after " << delay << " s of a " << seconds << " s run");
         // only the two final names: no partial trajectory, no temporary file
         REQUIRE(keys(t) == Strings{"run.json", "trajectory.csv"});
@@ -129,25 +164,15 @@ TEST_CASE("cairn run killed at random moments leaves the old or the new result, 
 
 TEST_CASE("cairn validate killed at random moments keeps the old report or the new one whole", "[app][kill]") {
     const fs::path dir = fresh_dir("kill_validate");
-    const Strings validate{"validate", "--cases", "stability", "--backends", "dem", "--jobs", "1", "-q"};
-    const Strings old_args = validate + Strings{"--set", "run.duration=0.2"};
-    const Strings new_args = validate + Strings{"--set", "run.duration=0.3"};
-    run_ok(old_args + Strings{"--out", (dir / "old").string()}, dir);
-    const double seconds = run_ok(new_args + Strings{"--out", (dir / "new").string()}, dir);
-    const auto old_tree = tree(dir / "old");
-    const auto new_tree = tree(dir / "new");
+    const Known k = known_results({"validate", "--cases", "stability", "--backends", "dem", "--jobs", "1", "-q"},
+                                  "run.duration=0.2", "run.duration=0.3", dir);
+    const auto& [new_args, seconds, old_tree, new_tree] = k;
     REQUIRE(old_tree.count("runs/stability/dem-rigid/trajectory.csv") == 1);
 
     const fs::path target = dir / "target";
     int saw_old = 0;
     for (double delay : kill_delays(6, seconds, 7u)) {
-        fs::remove_all(target);
-        fs::copy(dir / "old", target, fs::copy_options::recursive);
-        const pid_t pid = spawn_cairn(new_args + Strings{"--out", target.string()}, dir);
-        std::this_thread::sleep_for(std::chrono::duration<double>(delay));
-        ::kill(pid, SIGKILL);
-        wait_for(pid);
-        const auto t = tree(target);
+        const auto t = kill_during(new_args + Strings{"--out", target.string()}, dir / "old", target, delay, dir);
         INFO("killed after " << delay << " s of a " << seconds << " s validation");
         const bool is_old = t == old_tree;
         // the new report whole: every file there, the runs' trajectories and records as computed
@@ -170,13 +195,9 @@ TEST_CASE("SIGINT or SIGTERM stops cairn run with status interrupted and the par
     const fs::path dir = fresh_dir("interrupt_run_" + std::to_string(sig));
     const fs::path out = dir / "run";
     // a run of hours if left alone
-    const pid_t pid = spawn_cairn({"run", "paper/stability", "--backend", "dem", "-q", "--set", "run.duration=1e5",
-                                   "--out", out.string()},
-                                  dir);
-    REQUIRE(wait_until_exists(dir / ("run.tmp-" + std::to_string(pid)) / "trajectory.csv"));
-    std::this_thread::sleep_for(std::chrono::milliseconds(200));
-    ::kill(pid, sig);
-    const Ended e = wait_for(pid);
+    const Ended e = signal_when_staged(
+        {"run", "paper/stability", "--backend", "dem", "-q", "--set", "run.duration=1e5", "--out", out.string()}, "run",
+        "trajectory.csv", sig, dir);
     CHECK(e.exit_code == 130);
     CHECK_THAT(read_file(dir / "stderr.txt"), Contains("interrupted at t = ") && Contains("trajectory.partial.csv"));
     CHECK_FALSE(fs::exists(out / "trajectory.csv"));
@@ -204,11 +225,7 @@ TEST_CASE("SIGINT stops cairn validate and keeps the previous report", "[app][ki
     const Strings validate{"validate", "--cases", "stability", "--backends", "dem", "-q", "--out", out.string()};
     run_ok(validate + Strings{"--set", "run.duration=0.2"}, dir);
     const auto before = tree(out);
-    const pid_t pid = spawn_cairn(validate + Strings{"--set", "run.duration=1e5"}, dir);
-    REQUIRE(wait_until_exists(dir / ("validation.tmp-" + std::to_string(pid)) / "runs"));
-    std::this_thread::sleep_for(std::chrono::milliseconds(200));
-    ::kill(pid, SIGINT);
-    const Ended e = wait_for(pid);
+    const Ended e = signal_when_staged(validate + Strings{"--set", "run.duration=1e5"}, "validation", "runs", SIGINT, dir);
     CHECK(e.exit_code == 130);
     CHECK_THAT(read_file(dir / "stderr.txt"), Contains("interrupted") && Contains("keeps the previous"));
     CHECK(tree(out) == before);

@@ -10,6 +10,7 @@
 
 #include "error.hpp"
 #include "output/staged_dir.hpp"
+#include "output_files.hpp"
 
 using namespace cairn;
 namespace fs = std::filesystem;
@@ -17,24 +18,14 @@ using Catch::Matchers::Contains;
 
 namespace {
 
-fs::path scratch(const std::string& name) {
-    const auto dir = fs::path(CAIRN_BINARY_DIR) / "test_scratch" / "staged_dir" / name;
-    fs::remove_all(dir);
-    fs::create_directories(dir);
-    return dir;
-}
+fs::path scratch(const std::string& name) { return testing::scratch_dir("staged_dir/" + name); }
 
 void put(const fs::path& p, const std::string& text) {
     fs::create_directories(p.parent_path());
     std::ofstream(p, std::ios::binary) << text;
 }
 
-std::string get(const fs::path& p) {
-    std::ifstream in(p, std::ios::binary);
-    std::stringstream ss;
-    ss << in.rdbuf();
-    return ss.str();
-}
+std::string get(const fs::path& p) { return testing::read_all(p); }
 
 /// the names in `dir`, sorted
 std::vector<std::string> names(const fs::path& dir) {

@@ -7,6 +7,7 @@
 
 #include "../run/fake_backend.hpp"
 #include "output/trajectory_csv.hpp"
+#include "output_files.hpp"
 #include "run/runner.hpp"
 
 using namespace cairn;
@@ -14,19 +15,7 @@ namespace fs = std::filesystem;
 
 namespace {
 
-std::string slurp(const fs::path& p) {
-    std::ifstream in(p, std::ios::binary);
-    std::stringstream ss;
-    ss << in.rdbuf();
-    return ss.str();
-}
-
-fs::path scratch(const std::string& name) {
-    const auto dir = fs::path(CAIRN_BINARY_DIR) / "test_scratch" / "output" / name;
-    fs::remove_all(dir);
-    fs::create_directories(dir);
-    return dir;
-}
+fs::path scratch(const std::string& name) { return testing::scratch_dir("output/" + name); }
 
 }  // namespace
 
@@ -40,7 +29,7 @@ TEST_CASE("a trajectory streamed to a file has the bytes of the in-memory writer
     std::ostringstream expected;
     write_trajectory_csv(expected, scene, collected.samples);
     REQUIRE(streamed.sample_count == 11);
-    CHECK(slurp(dir / "trajectory.csv") == expected.str());
+    CHECK(testing::read_all(dir / "trajectory.csv") == expected.str());
 }
 
 TEST_CASE("a trajectory file that cannot be created names it", "[output]") {
