@@ -17,17 +17,8 @@
 namespace fs = std::filesystem;
 using namespace cairn::test;
 using Catch::Matchers::Contains;
-using Strings = std::vector<std::string>;
 
 namespace {
-
-/// every regular file under `dir`: relative path -> content
-std::map<std::string, std::string> tree(const fs::path& dir) {
-    std::map<std::string, std::string> t;
-    for (const auto& e : fs::recursive_directory_iterator(dir))
-        if (e.is_regular_file()) t[fs::relative(e.path(), dir).generic_string()] = read_file(e.path());
-    return t;
-}
 
 std::vector<std::string> keys(const std::map<std::string, std::string>& t) {
     std::vector<std::string> k;
@@ -42,34 +33,12 @@ nlohmann::json record_of(const std::string& text) {
     return j;
 }
 
-Strings operator+(Strings a, const Strings& b) {
-    a.insert(a.end(), b.begin(), b.end());
-    return a;
-}
-
 /// run cairn to its end; returns the wall time, s
 double run_ok(const Strings& args, const fs::path& scratch) {
     const auto t0 = std::chrono::steady_clock::now();
     const Ended e = wait_for(spawn_cairn(args, scratch));
     REQUIRE(e.exit_code == 0);
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-}
-
-/// names in `dir` that staging left behind
-std::vector<std::string> leftovers(const fs::path& dir) {
-    std::vector<std::string> v;
-    for (const auto& e : fs::directory_iterator(dir))
-        if (e.path().filename().string().find(".tmp") != std::string::npos) v.push_back(e.path().filename().string());
-    return v;
-}
-
-/// wait (up to 60 s) until `p` exists
-bool wait_until_exists(const fs::path& p) {
-    for (int i = 0; i < 6000; ++i) {
-        if (fs::exists(p)) return true;
-        std::this_thread::sleep_for(std::chrono::milliseconds(10));
-    }
-    return false;
 }
 
 /// seeded delays: kill points spread over the whole run, the swap at its end included
@@ -110,19 +79,6 @@ Known known_results(const Strings& base, const std::string& old_set, const std::
     k.old_tree = tree(dir / "old");
     k.new_tree = tree(dir / "new");
     return k;
-}
-
-/// start `cairn args...`, wait until it writes `staged` (a path inside its staging directory
-/// "<name>.tmp-<pid>" under `dir`) and a little more, send it `sig`; how it ended
-Ended signal_when_staged(const Strings& args, const std::string& name, const std::string& staged, int sig,
-                         const fs::path& dir) {
-    const pid_t pid = spawn_cairn(args, dir);
-    const bool started = wait_until_exists(dir / (name + ".tmp-" + std::to_string(pid)) / staged);
-    std::this_thread::sleep_for(std::chrono::milliseconds(200));
-    ::kill(pid, sig);
-    const Ended e = wait_for(pid);
-    REQUIRE(started);
-    return e;
 }
 
 /// one thread per child: the kill points are spread over the run's length, which two OpenMP threads
@@ -195,9 +151,11 @@ TEST_CASE("SIGINT or SIGTERM stops cairn run with status interrupted and the par
     const fs::path dir = fresh_dir("interrupt_run_" + std::to_string(sig));
     const fs::path out = dir / "run";
     // a run of hours if left alone
-    const Ended e = signal_when_staged(
+    const Signalled s = signal_when_staged(
         {"run", "paper/stability", "--backend", "dem", "-q", "--set", "run.duration=1e5", "--out", out.string()}, "run",
         "trajectory.csv", sig, dir);
+    REQUIRE(s.staged);
+    const Ended& e = s.ended;
     CHECK(e.exit_code == 130);
     CHECK_THAT(read_file(dir / "stderr.txt"), Contains("interrupted at t = ") && Contains("trajectory.partial.csv"));
     CHECK_FALSE(fs::exists(out / "trajectory.csv"));
@@ -225,7 +183,9 @@ TEST_CASE("SIGINT stops cairn validate and keeps the previous report", "[app][ki
     const Strings validate{"validate", "--cases", "stability", "--backends", "dem", "-q", "--out", out.string()};
     run_ok(validate + Strings{"--set", "run.duration=0.2"}, dir);
     const auto before = tree(out);
-    const Ended e = signal_when_staged(validate + Strings{"--set", "run.duration=1e5"}, "validation", "runs", SIGINT, dir);
+    const Signalled s = signal_when_staged(validate + Strings{"--set", "run.duration=1e5"}, "validation", "runs", SIGINT, dir);
+    REQUIRE(s.staged);
+    const Ended& e = s.ended;
     CHECK(e.exit_code == 130);
     CHECK_THAT(read_file(dir / "stderr.txt"), Contains("interrupted") && Contains("keeps the previous"));
     CHECK(tree(out) == before);

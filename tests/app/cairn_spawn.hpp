@@ -1,6 +1,7 @@
 #pragma once
 // Starting the cairn executable from a test as a child process, with an argument vector (no shell),
-// so that the test can signal it: spawn, wait, and the exit code or the signal that ended it.
+// so that the test can signal it: spawn, wait, the exit code or the signal that ended it; and the
+// files a command left in a directory.
 
 #include <signal.h>
 #include <spawn.h>
@@ -8,14 +9,26 @@
 #include <fcntl.h>
 #include <unistd.h>
 
+#include <chrono>
 #include <filesystem>
+#include <fstream>
+#include <map>
+#include <sstream>
 #include <stdexcept>
 #include <string>
+#include <thread>
 #include <vector>
 
 extern char** environ;
 
 namespace cairn::test {
+
+using Strings = std::vector<std::string>;
+
+inline Strings operator+(Strings a, const Strings& b) {
+    a.insert(a.end(), b.begin(), b.end());
+    return a;
+}
 
 /// start `cairn args...` with stdout and stderr into files under `scratch`; returns the pid
 inline pid_t spawn_cairn(const std::vector<std::string>& args, const std::filesystem::path& scratch) {
@@ -52,6 +65,55 @@ inline Ended wait_for(pid_t pid) {
     if (WIFEXITED(status)) e.exit_code = WEXITSTATUS(status);
     if (WIFSIGNALED(status)) e.signal = WTERMSIG(status);
     return e;
+}
+
+/// every regular file under `dir`: relative path -> content
+inline std::map<std::string, std::string> tree(const std::filesystem::path& dir) {
+    std::map<std::string, std::string> t;
+    for (const auto& e : std::filesystem::recursive_directory_iterator(dir)) {
+        if (!e.is_regular_file()) continue;
+        std::ifstream in(e.path(), std::ios::binary);
+        std::stringstream ss;
+        ss << in.rdbuf();
+        t[std::filesystem::relative(e.path(), dir).generic_string()] = ss.str();
+    }
+    return t;
+}
+
+/// names in `dir` that staging left behind ("*.tmp-<pid>", "*.tmp")
+inline Strings leftovers(const std::filesystem::path& dir) {
+    Strings v;
+    for (const auto& e : std::filesystem::directory_iterator(dir))
+        if (e.path().filename().string().find(".tmp") != std::string::npos) v.push_back(e.path().filename().string());
+    return v;
+}
+
+/// wait (up to 60 s) until `p` exists
+inline bool wait_until_exists(const std::filesystem::path& p) {
+    for (int i = 0; i < 6000; ++i) {
+        if (std::filesystem::exists(p)) return true;
+        std::this_thread::sleep_for(std::chrono::milliseconds(10));
+    }
+    return false;
+}
+
+/// a child signalled once it was at work
+struct Signalled {
+    bool staged = false;   ///< it wrote into its staging directory before the signal
+    Ended ended;
+};
+
+/// start `cairn args...`, wait until `staged` exists inside its staging directory
+/// "<name>.tmp-<pid>" under `dir`, and a little more, then send it `sig`
+inline Signalled signal_when_staged(const Strings& args, const std::string& name, const std::string& staged, int sig,
+                                    const std::filesystem::path& dir) {
+    const pid_t pid = spawn_cairn(args, dir);
+    Signalled s;
+    s.staged = wait_until_exists(dir / (name + ".tmp-" + std::to_string(pid)) / staged);
+    std::this_thread::sleep_for(std::chrono::milliseconds(200));
+    ::kill(pid, sig);
+    s.ended = wait_for(pid);
+    return s;
 }
 
 }  // namespace cairn::test
