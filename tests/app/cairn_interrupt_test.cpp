@@ -62,32 +62,17 @@ TEST_CASE("SIGINT stops cairn run-all after complete runs, exit 130", "[app][kil
     CHECK(leftovers_under(out).empty());
 }
 
-TEST_CASE("SIGINT stops cairn study inertia and keeps the previous study", "[app][kill]") {
-    const fs::path dir = fresh_dir("interrupt_study");
-    const fs::path out = dir / "study";
+TEST_CASE("SIGINT stops cairn study inertia and cairn bench, keeping their previous results", "[app][kill]") {
+    // a study of two meshes; the bench's long resting run of 10^8 steps: minutes if left alone
+    const auto [name, args] = GENERATE(table<std::string, Strings>(
+        {{"study", {"study", "inertia", "--n", "1,2", "--repeats", "1", "--jobs", "1", "-q"}},
+         {"bench", {"bench", "stability", "--backends", "dem", "--long-steps", "100000000", "--jobs", "1", "-q"}}}));
+    const fs::path dir = fresh_dir("interrupt_" + name);
+    const fs::path out = dir / name;
     fs::create_directories(out);
-    { std::ofstream(out / "inertia.md") << "the previous study\n"; }
+    { std::ofstream(out / "notes.txt") << "beside the previous results\n"; }
     const auto before = tree(out);
-    const Signalled s = signal_when_staged(
-        {"study", "inertia", "--n", "1,2", "--repeats", "1", "--jobs", "1", "-q", "--out", out.string()}, "study", "",
-        SIGINT, dir);
-    REQUIRE(s.staged);
-    CHECK(s.ended.exit_code == 130);
-    CHECK_THAT(read_file(dir / "stderr.txt"), Contains("keeps the previous"));
-    CHECK(tree(out) == before);
-    CHECK(leftovers(dir).empty());
-}
-
-TEST_CASE("SIGINT stops cairn bench and keeps the previous results", "[app][kill]") {
-    const fs::path dir = fresh_dir("interrupt_bench");
-    const fs::path out = dir / "bench";
-    fs::create_directories(out);
-    { std::ofstream(out / "notes.txt") << "the previous results\n"; }
-    const auto before = tree(out);
-    // the long resting run of 10^8 steps would take minutes
-    const Signalled s = signal_when_staged({"bench", "stability", "--backends", "dem", "--long-steps", "100000000",
-                                            "--jobs", "1", "-q", "--out", out.string()},
-                                           "bench", "notes.txt", SIGINT, dir);
+    const Signalled s = signal_when_staged(args + Strings{"--out", out.string()}, name, "notes.txt", SIGINT, dir);
     REQUIRE(s.staged);
     CHECK(s.ended.exit_code == 130);
     CHECK_THAT(read_file(dir / "stderr.txt"), Contains("keeps the previous"));
