@@ -15,7 +15,7 @@ void clear_stop() noexcept;
 
 /// send SIGINT and SIGTERM to request_stop(); a second signal ends the process at once (the
 /// default action), which never leaves a half-written result in place since results are swapped
-/// in whole (output/staged_dir.hpp)
+/// in whole (output/staged_dir.hpp); a signal ignored when the process started stays ignored
 void install_stop_handlers();
 
 }  // namespace cairn

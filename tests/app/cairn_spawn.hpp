@@ -5,6 +5,7 @@
 
 #include <signal.h>
 #include <spawn.h>
+#include <sys/resource.h>
 #include <sys/wait.h>
 #include <fcntl.h>
 #include <unistd.h>
@@ -55,13 +56,16 @@ inline pid_t spawn_cairn(const std::vector<std::string>& args, const std::filesy
 struct Ended {
     int exit_code = -1;   ///< when it exited
     int signal = 0;       ///< when a signal ended it
+    long max_rss_kb = 0;  ///< its peak resident set size, KiB
 };
 
 inline Ended wait_for(pid_t pid) {
     int status = 0;
-    while (::waitpid(pid, &status, 0) < 0) {
+    struct rusage usage {};
+    while (::wait4(pid, &status, 0, &usage) < 0) {
     }
     Ended e;
+    e.max_rss_kb = usage.ru_maxrss;
     if (WIFEXITED(status)) e.exit_code = WEXITSTATUS(status);
     if (WIFSIGNALED(status)) e.signal = WTERMSIG(status);
     return e;
