@@ -19,9 +19,14 @@ namespace cairn {
 
 namespace {
 
-/// the pid in "<name>.tmp-<pid>" or "<name>.old-<pid>", or -1 when `entry` is not such a name
+/// the staging sibling is "<DIR>.cairn-tmp-<pid>"; the old result moved aside "<DIR>.cairn-old-<pid>"
+constexpr const char* kStagingTag = ".cairn-tmp-";
+constexpr const char* kOldTag = ".cairn-old-";
+
+/// the pid in "<name>.cairn-tmp-<pid>" or "<name>.cairn-old-<pid>", or -1 when `entry` is not such
+/// a name (names that only cairn makes, so that no directory of the user's is taken for one)
 long staging_pid(const std::string& entry, const std::string& name) {
-    for (const char* tag : {".tmp-", ".old-"}) {
+    for (const char* tag : {kStagingTag, kOldTag}) {
         const std::string prefix = name + tag;
         if (entry.size() <= prefix.size() || entry.compare(0, prefix.size(), prefix) != 0) continue;
         const std::string digits = entry.substr(prefix.size());
@@ -31,13 +36,14 @@ long staging_pid(const std::string& entry, const std::string& name) {
     return -1;
 }
 
-/// true for names that only staging leaves behind: "x.tmp-<pid>", "x.old-<pid>", "x.tmp"
+/// true for names that only staging leaves behind: "x.cairn-tmp-<pid>", "x.cairn-old-<pid>", and
+/// "x.tmp" (output/atomic_write.hpp)
 bool is_leftover(const std::string& entry) {
     if (entry.size() > 4 && entry.compare(entry.size() - 4, 4, ".tmp") == 0) return true;
-    for (const char* tag : {".tmp-", ".old-"}) {
+    for (const std::string tag : {kStagingTag, kOldTag}) {
         const auto at = entry.rfind(tag);
         if (at == std::string::npos || at == 0) continue;
-        const std::string digits = entry.substr(at + 5);
+        const std::string digits = entry.substr(at + tag.size());
         if (!digits.empty() && digits.find_first_not_of("0123456789") == std::string::npos) return true;
     }
     return false;
@@ -81,7 +87,7 @@ StagedDir::StagedDir(const std::string& final_dir, bool replace) {
     fs::create_directories(parent, ec);
     if (ec) throw Error("output directory " + final_dir + ": cannot create " + parent.string() + ": " + ec.message());
     remove_stale(final_);
-    staging_ = parent / (final_.filename().string() + ".tmp-" + std::to_string(::getpid()));
+    staging_ = parent / (final_.filename().string() + kStagingTag + std::to_string(::getpid()));
     fs::remove_all(staging_, ec);   // a leftover of this very pid (an earlier StagedDir in this process)
     if (::mkdir(staging_.c_str(), 0777) != 0)
         throw Error("output directory " + final_dir + ": cannot write into " + parent.string() + ": " +
@@ -133,7 +139,7 @@ void StagedDir::commit() {
                                      std::strerror(errno));
         // a file system without the atomic swap: the old result is moved aside first, so DIR is
         // briefly absent (never mixed)
-        const fs::path old = final_.parent_path() / (final_.filename().string() + ".old-" + std::to_string(::getpid()));
+        const fs::path old = final_.parent_path() / (final_.filename().string() + kOldTag + std::to_string(::getpid()));
         if (::rename(final_.c_str(), old.c_str()) != 0)
             throw std::runtime_error("cannot move " + final_.string() + " aside: " + std::strerror(errno));
         if (::rename(staging_.c_str(), final_.c_str()) != 0) {

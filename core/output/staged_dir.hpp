@@ -1,5 +1,5 @@
 #pragma once
-/// A result directory written as a set: every file goes into a staging sibling "<DIR>.tmp-<pid>",
+/// A result directory written as a set: every file goes into a staging sibling "<DIR>.cairn-tmp-<pid>",
 /// which is fsynced and then swapped with DIR in one rename (Linux renameat2 RENAME_EXCHANGE), so
 /// that DIR holds either the old complete result or the new complete result, whenever the process
 /// stops. The old content is removed after the swap; staging siblings left by killed processes

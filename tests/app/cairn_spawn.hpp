@@ -84,11 +84,12 @@ inline std::map<std::string, std::string> tree(const std::filesystem::path& dir)
     return t;
 }
 
-/// names in `dir` that staging left behind ("*.tmp-<pid>", "*.tmp")
+/// names in `dir` that staging left behind ("*.cairn-tmp-<pid>", "*.cairn-old-<pid>", "*.tmp")
 inline Strings leftovers(const std::filesystem::path& dir) {
     Strings v;
     for (const auto& e : std::filesystem::directory_iterator(dir))
-        if (e.path().filename().string().find(".tmp") != std::string::npos) v.push_back(e.path().filename().string());
+        if (e.path().filename().string().find(".cairn-") != std::string::npos ||
+            e.path().extension() == ".tmp") v.push_back(e.path().filename().string());
     return v;
 }
 
@@ -108,12 +109,12 @@ struct Signalled {
 };
 
 /// start `cairn args...`, wait until `staged` exists inside its staging directory
-/// "<name>.tmp-<pid>" under `dir`, and a little more, then send it `sig`
+/// "<name>.cairn-tmp-<pid>" under `dir`, and a little more, then send it `sig`
 inline Signalled signal_when_staged(const Strings& args, const std::string& name, const std::string& staged, int sig,
                                     const std::filesystem::path& dir) {
     const pid_t pid = spawn_cairn(args, dir);
     Signalled s;
-    s.staged = wait_until_exists(dir / (name + ".tmp-" + std::to_string(pid)) / staged);
+    s.staged = wait_until_exists(dir / (name + ".cairn-tmp-" + std::to_string(pid)) / staged);
     std::this_thread::sleep_for(std::chrono::milliseconds(200));
     ::kill(pid, sig);
     s.ended = wait_for(pid);

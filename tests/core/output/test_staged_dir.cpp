@@ -43,7 +43,7 @@ TEST_CASE("a staged directory appears only on commit", "[output]") {
     {
         StagedDir s(dir.string(), false);
         CHECK(s.path().parent_path() == fs::absolute(dir).parent_path());
-        CHECK(s.path().filename().string() == "run.tmp-" + std::to_string(::getpid()));
+        CHECK(s.path().filename().string() == "run.cairn-tmp-" + std::to_string(::getpid()));
         put(s.path() / "a.txt", "new\n");
         CHECK_FALSE(fs::exists(dir));
         s.commit();
@@ -95,7 +95,7 @@ TEST_CASE("carry_over keeps the entries a command does not own", "[output]") {
     put(dir / "report.md", "old report\n");
     put(dir / "runs" / "x" / "trajectory.csv", "old\n");
     put(dir / "study" / "inertia.md", "study\n");
-    put(dir / "bench.tmp-99999999" / "junk", "a staging leftover\n");
+    put(dir / "bench.cairn-tmp-99999999" / "junk", "a staging leftover\n");
     StagedDir s(dir.string(), true);
     s.carry_over({"report.md", "runs"}, StagedDir::Carry::copy);
     put(s.path() / "report.md", "new report\n");
@@ -110,11 +110,11 @@ TEST_CASE("staging directories of processes that died are removed by the next on
     const pid_t child = ::fork();
     if (child == 0) ::_exit(0);
     ::waitpid(child, nullptr, 0);   // a pid that no longer exists
-    put(root / ("run.tmp-" + std::to_string(child)) / "trajectory.csv", "half\n");
-    put(root / ("run.tmp-" + std::to_string(::getppid())) / "x", "a live process's\n");
+    put(root / ("run.cairn-tmp-" + std::to_string(child)) / "trajectory.csv", "half\n");
+    put(root / ("run.cairn-tmp-" + std::to_string(::getppid())) / "x", "a live process's\n");
     StagedDir s((root / "run").string(), false);
-    CHECK_FALSE(fs::exists(root / ("run.tmp-" + std::to_string(child))));
-    CHECK(fs::exists(root / ("run.tmp-" + std::to_string(::getppid()))));
+    CHECK_FALSE(fs::exists(root / ("run.cairn-tmp-" + std::to_string(child))));
+    CHECK(fs::exists(root / ("run.cairn-tmp-" + std::to_string(::getppid()))));
 }
 
 TEST_CASE("carry_over by hard links brings a directory's other files without copying them", "[output]") {
