@@ -1,4 +1,5 @@
 // the report document of a validation (report.md and index.html are its two renderings)
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <map>
@@ -66,23 +67,55 @@ std::string analytic_label(const CaseResult& c) {
 Document build_report(const std::vector<CaseResult>& cases, const FigureSet& figures, const ReportContext& ctx) {
     Document d;
     d.title = "cairn validation report";
-    int runs = 0, passed = 0, missed = 0, other = 0;
+    int runs = 0, passed = 0, missed = 0, nc = 0, other = 0;
+    int m_pass = 0, m_miss = 0, m_nc = 0;
     for (const auto& c : cases)
         for (const auto& r : c.runs) {
             ++runs;
-            std::string v = run_verdict(r);
-            if (v.rfind("pass", 0) == 0) ++passed;
-            else if (v.rfind("MISS", 0) == 0) ++missed;
+            const std::string v = verdict_cell(r);
+            if (v == "pass") ++passed;
+            else if (v == "miss") ++missed;
+            else if (v == "n.c.") ++nc;
             else ++other;
+            if (r.analysed)
+                for (const auto& m : r.analysis.metrics) {
+                    if (m.check == metrics::Check::not_comparable) ++m_nc;
+                    else if (m.judged()) ++(m.pass() ? m_pass : m_miss);
+                }
         }
-    d.paragraph(std::to_string(cases.size()) + " cases, " + std::to_string(runs) + " runs (" + std::to_string(passed) +
-                " within every tolerance, " + std::to_string(missed) + " with misses, " + std::to_string(other) +
-                " not judged) in " + fixed_text(ctx.wall_seconds, 1) + " s wall on " + std::to_string(ctx.jobs) +
-                " threads. Command: " + ctx.command);
+    d.paragraph(std::to_string(cases.size()) + " cases, " + std::to_string(runs) + " runs: " + std::to_string(passed) +
+                " pass, " + std::to_string(missed) + " miss, " + std::to_string(nc) + " not comparable, " +
+                std::to_string(other) + " without metrics (cannot represent, failed). Metrics: " + std::to_string(m_pass) +
+                " pass, " + std::to_string(m_miss) + " miss, " + std::to_string(m_nc) + " not comparable. " +
+                fixed_text(ctx.wall_seconds, 1) + " s wall on " + std::to_string(ctx.jobs) + " threads. Command: " + ctx.command);
     if (!figures.note.empty()) d.paragraph("Figures: " + figures.note);
 
+    // the grid: cases down, variants across (in order of first appearance), each cell links to its case
     d.heading(2, "Verdict");
-    Table v{{"case", "variant", "verdict", "worst metric (value vs reference, error, tolerance)", "wall s"}, {}};
+    d.paragraph("pass: every judged metric within its tolerance; miss: at least one is not; n.c. (not comparable): "
+                "no reference models what the variant does (the reason is in the case's metric table).");
+    std::vector<std::string> variants;
+    for (const auto& c : cases)
+        for (const auto& r : c.runs)
+            if (std::find(variants.begin(), variants.end(), r.variant.name) == variants.end()) variants.push_back(r.variant.name);
+    Table grid{{"case"}, {}, {}};
+    for (const auto& v : variants) grid.header.push_back(v);
+    for (const auto& c : cases) {
+        std::vector<std::string> row{c.name}, links{c.name};
+        for (const auto& v : variants) {
+            std::string cell = "", link = "";
+            for (const auto& r : c.runs)
+                if (r.variant.name == v) cell = verdict_cell(r), link = c.name;
+            row.push_back(cell);
+            links.push_back(link);
+        }
+        grid.rows.push_back(row);
+        grid.links.push_back(links);
+    }
+    d.table(grid);
+
+    d.heading(3, "Runs");
+    Table v{{"case", "variant", "verdict", "worst metric (value vs reference, error, tolerance)", "wall s"}, {}, {}};
     for (const auto& c : cases)
         for (const auto& r : c.runs) {
             const std::string worst_text = worst_metric_text(r);
