@@ -15,7 +15,7 @@ cases::ContactKind contact_kind(const Variant& v, const Scene& scene) {
 const std::vector<std::string>& paper_cases() {
     static const std::vector<std::string> names = {
         "stability", "impact", "impact_damped", "friction_slide", "friction_stick", "friction_stick_base", "rolling",
-        "rocking", "rocking_damped_02", "rocking_damped_04", "rocking_slender"};
+        "rocking", "rocking_damped_02", "rocking_damped_04", "rocking_slender", "rocking_housner"};
     return names;
 }
 

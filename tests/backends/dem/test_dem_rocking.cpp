@@ -108,3 +108,32 @@ TEST_CASE("paper rocking scene: dem's rebound amplitudes follow the spring block
         CHECK(amps[k] == Approx(ref.amplitudes[k]).epsilon(0.02));
     }
 }
+
+TEST_CASE("rocking_housner scene: dem with the calibrated contact damping follows Housner for three impacts",
+          "[dem][rocking]") {
+    // ζ = 0.386 is where the spring block meets Housner's sequence for this block at kn = 3e7
+    // (oracle::calibrate_housner_damping); dem on the same springs must follow
+    Scene s = load_scene(std::string(CAIRN_SOURCE_DIR) + "/scenarios/paper/rocking_housner.toml");
+    const double th0 = s.reference->values.at("theta0");
+    const oracle::HousnerBlock hb{0.1, 0.5, 9.81};
+    auto b = test::build_dem(s);
+    double prev = th0, swing = 0.0;
+    int crossings = 0;
+    std::vector<double> amps;
+    test::run_dem(*b, 3.0, [&](const Sample& x) {
+        Eigen::AngleAxisd aa(x.blocks[0].orientation);
+        const double th = aa.angle() * aa.axis().y();
+        if ((prev > 0 && th <= 0) || (prev < 0 && th >= 0)) {
+            if (++crossings > 1) amps.push_back(swing);
+            swing = 0.0;
+        }
+        if (crossings > 0) swing = std::max(swing, std::abs(th));
+        prev = th;
+    });
+    REQUIRE(amps.size() >= 3);
+    for (int k = 0; k < 3; ++k) {
+        INFO("impact " << k + 1 << ": dem " << amps[size_t(k)] << " rad, Housner " << hb.amplitude_after(th0, k + 1));
+        // 2 %: the issue's target for the calibrated contact (measured −0.8 % to +0.7 %)
+        CHECK(amps[size_t(k)] == Approx(hb.amplitude_after(th0, k + 1)).epsilon(0.02));
+    }
+}
