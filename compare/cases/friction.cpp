@@ -77,7 +77,7 @@ CaseAnalysis analyse_friction(const Scene& scene, const std::vector<Sample>& s, 
         // skip the first 10 % (the shear spring's start-up transient), then fit x = c0 + c1 t + c2 t²
         auto c = polyfit(x, 2, 0.1 * T, T);
         r.metrics.push_back(relative("sliding acceleration", "m/s²", 2.0 * c[2], acc, 0.01,
-                                     "(H/W − μ) g, quadratic fit over the last 90 % of the run; issue 5: 1 %"));
+                                     "(H/W − μ) g, quadratic fit over the last 90 % of the run; 1 %"));
         auto half = crossings(x, 0.5 * 0.5 * acc * T * T, Crossing::up);
         if (!half.empty()) { r.event_time = half[0]; r.has_event = true; }
         return r;

@@ -93,8 +93,14 @@ CaseAnalysis analyse_rocking(const Scene& scene, const std::vector<Sample>& s, C
                              "), integrated independently";
         out.analytic_key = "spring block";
     } else {
+        // Housner's swings that end within the run: impact k+1 comes 2·t1(θk) after impact k
         ref_impacts = {hb.first_impact(th0)};
-        for (int n = 1; n <= 3; ++n) ref_amps.push_back(hb.amplitude_after(th0, n));
+        for (int n = 1; n <= 3; ++n) {
+            const double amp = hb.amplitude_after(th0, n), next = ref_impacts.back() + 2.0 * hb.first_impact(amp);
+            if (next > duration) break;
+            ref_amps.push_back(amp);
+            ref_impacts.push_back(next);
+        }
         out.analytic = hb.angles(th0, hb.velocity_ratio(), th.t);
         char key[64];
         std::snprintf(key, sizeof key, "Housner r = %.3g", hb.velocity_ratio());

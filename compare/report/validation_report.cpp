@@ -66,8 +66,12 @@ std::string run_verdict(const CaseRun& r) {
 
 std::string verdict_cell(const CaseRun& r) {
     const std::string v = run_verdict(r);
-    if (v.rfind("pass", 0) == 0) return "pass";
-    if (v.rfind("miss", 0) == 0) return "miss";
+    int nc = 0;
+    if (r.analysed)
+        for (const auto& m : r.analysis.metrics) nc += m.check == metrics::Check::not_comparable;
+    const std::string tail = nc ? " (" + std::to_string(nc) + " n.c.)" : "";
+    if (v.rfind("pass", 0) == 0) return "pass" + tail;
+    if (v.rfind("miss", 0) == 0) return "miss" + tail;
     if (v.rfind("not comparable", 0) == 0) return "n.c.";
     return v;
 }

@@ -31,7 +31,8 @@ struct ReportContext {
 /// "no metrics"
 std::string run_verdict(const validation::CaseRun& r);
 
-/// the verdict grid's cell of a run: "pass", "miss", "n.c.", or the run's outcome
+/// the verdict grid's cell of a run: "pass", "miss" (each followed by " (n n.c.)" when n metrics are
+/// not comparable), "n.c.", or the run's outcome
 std::string verdict_cell(const validation::CaseRun& r);
 
 /// the metric of a run that misses by the most (relative to its tolerance), as one line; the

@@ -51,7 +51,7 @@ TEST_CASE("cairn validate on stability with dem writes the summary, the report a
     CHECK_THAT(md, Contains("## Verdict") && Contains("## Conventions") && Contains("damping ratio ζ") &&
                        Contains("## Capability matrix"));
     // the verdict grid: cases down, variants across, each cell linking to its case's section
-    CHECK_THAT(md, Contains("| case | dem-rigid | dem-deformable |") && Contains("| stability | [pass](#stability) |"));
+    CHECK_THAT(md, Contains("| case | dem-rigid | dem-deformable |") && Contains("| [stability](#stability) | [pass](#stability) |"));
     CHECK(fs::exists(out / "runs" / "stability" / "dem-rigid" / "trajectory.csv"));
     CHECK(fs::exists(out / "runs" / "stability" / "dem-rigid" / "run.json"));
 }
