@@ -47,7 +47,7 @@ std::vector<std::string> conventions() {
         "meshed as the scene's [blocks.A.mesh] says (2 × 2 × 2 hex8, consistent mass in the paper scenes); "
         "<engine>-rigid = the engine's own rigid contact; <engine>-matched = contact matched to the "
         "penalty law (docs/backends.md). The reference engines step at 1e-4 s (dt = auto).",
-        "Tolerances come from issue 5 and physics.md and are the same for every backend: stability 1 % "
+        "Tolerances are the same for every backend: stability 1 % "
         "(penetration, period); impact 1 % (first contact, bounce period) and 2 % (peak penetration, "
         "rebound); sliding 1 %; Housner first impact 1 % for rigid contact and 2 % for penalty contact "
         "(edge on a face at the paper's kn); rolling: coarse oracles (10 %, bounds). A miss is reported, "

@@ -133,7 +133,7 @@ TEST_CASE("rocking_housner scene: dem with the calibrated contact damping follow
     REQUIRE(amps.size() >= 3);
     for (int k = 0; k < 3; ++k) {
         INFO("impact " << k + 1 << ": dem " << amps[size_t(k)] << " rad, Housner " << hb.amplitude_after(th0, k + 1));
-        // 2 %: the issue's target for the calibrated contact (measured −0.8 % to +0.7 %)
+        // 2 %: the target for a calibrated contact, as for the amplitudes (measured −0.8 % to +0.7 %)
         CHECK(amps[size_t(k)] == Approx(hb.amplitude_after(th0, k + 1)).epsilon(0.02));
     }
 }

@@ -17,7 +17,7 @@ TEST_CASE("Housner damping: the slender block at kn = 3e7 reaches Housner's thre
     // the scene's ζ = 0.386 (the search's optimum, to three digits)
     CHECK(c.zeta == Approx(0.386).margin(0.005));
     REQUIRE(c.amplitudes.size() == 3);
-    // within 2 % of Housner for every impact: the issue's target (measured 0.7 %)
+    // within 2 % of Housner for every impact, the amplitudes' tolerance (measured 0.7 %)
     CHECK(c.worst < 0.02);
     for (int k = 0; k < 3; ++k) CHECK(c.amplitudes[size_t(k)] == Approx(c.housner[size_t(k)]).epsilon(0.02));
     // a stiffer contact needs more damping for the same loss (0.70 at 1e8)

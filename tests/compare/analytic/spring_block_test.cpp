@@ -70,7 +70,7 @@ TEST_CASE("spring block: stiff springs give Housner's first impact", "[oracle][s
     HousnerBlock hb{0.35, 0.5, 9.81};
     const double th0 = M_PI / 6;
     // before the first impact the block turns about its edge; at kn = 3e11 the edge sinks 2e-5 m:
-    // the time moves by < 1e-4 of t1 (physics.md's 2-D sketch: 0.02 % at 3e8, 0.13 % at 3e7)
+    // the time moves by < 1e-4 of t1 (the sinking edge delays it: 0.13 % at 3e7)
     const auto tr = reading_b(3e11).rock(th0, 0.8, 1e-3);
     REQUIRE_FALSE(tr.impacts.empty());
     CHECK(tr.impacts[0] == Approx(hb.first_impact(th0)).epsilon(1e-4));
