@@ -3,6 +3,9 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <string>
+
+#include "error.hpp"
 
 namespace cairn::oracle {
 
@@ -126,7 +129,12 @@ RockingTrace SpringBlock::rock(double theta0, double duration, double sample_dt)
     tr.t.push_back(0.0);
     tr.theta.push_back(s.phi);
     double next_sample = sample_dt, swing_max = 0.0;
-    const long steps = long(std::ceil(duration / h));
+    // a bound on the work: 1e8 steps (a few seconds) covers kn up to ~1e13 N/m³ over 3 s
+    const double wanted = std::ceil(duration / h);
+    if (!(wanted <= 1e8))
+        throw Error("spring block: kn = " + std::to_string(kn) + " N/m³ over " + std::to_string(duration) +
+                    " s needs " + std::to_string(wanted) + " steps of " + std::to_string(h) + " s, more than 1e8");
+    const long steps = long(wanted);
     for (long k = 1; k <= steps; ++k) {
         const double t = k * h;
         const double ax = l.fx / mass, az = l.fz / mass - g, al = l.torque / inertia;
@@ -163,10 +171,14 @@ RockingTrace SpringBlock::rock(double theta0, double duration, double sample_dt)
 }
 
 std::vector<double> SpringBlock::angles(double theta0, const std::vector<double>& times) const {
-    std::vector<double> out;
-    if (times.empty()) return out;
+    if (times.empty()) return {};
     // sample finely enough that linear interpolation is far below any tolerance
-    const RockingTrace tr = rock(theta0, times.back() + 1e-9, 1e-4);
+    return angles_at(rock(theta0, times.back() + 1e-9, 1e-4), times);
+}
+
+std::vector<double> angles_at(const RockingTrace& tr, const std::vector<double>& times) {
+    std::vector<double> out;
+    if (tr.t.empty()) return out;
     size_t j = 0;
     for (double t : times) {
         while (j + 1 < tr.t.size() && tr.t[j + 1] < t) ++j;

@@ -45,10 +45,13 @@ struct SpringBlock {
     double steps_per_period = 1000.0;
 
     /// release at rest tilted θ0 (rad, 0 < θ0 < α) on its +x bottom edge, just touching; run for
-    /// `duration` (s), sampling every `sample_dt` (s)
+    /// `duration` (s), sampling every `sample_dt` (s); throws cairn::Error beyond 1e8 steps
     RockingTrace rock(double theta0, double duration, double sample_dt) const;
     /// θ(t) at the given ascending times (rad), from the same run
     std::vector<double> angles(double theta0, const std::vector<double>& times) const;
 };
+
+/// θ of a trace at the given ascending times, linear between its samples (rad); the last value past its end
+std::vector<double> angles_at(const RockingTrace& trace, const std::vector<double>& times);
 
 }  // namespace cairn::oracle

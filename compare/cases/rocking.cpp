@@ -84,10 +84,10 @@ CaseAnalysis analyse_rocking(const Scene& scene, const std::vector<Sample>& s, C
     // the reference's impacts and amplitudes
     std::vector<double> ref_impacts, ref_amps;
     if (model == Model::springs) {
-        const auto tr = spring_block(scene, contact).rock(th0, duration, 1e-4);
+        const auto tr = spring_block(scene, contact).rock(th0, duration + 1e-9, 1e-4);
         ref_impacts = tr.impacts;
         ref_amps = tr.amplitudes;
-        out.analytic = spring_block(scene, contact).angles(th0, th.t);
+        out.analytic = oracle::angles_at(tr, th.t);
         out.analytic_label = "spring block: the rigid block on the same point springs (ζ = " +
                              std::to_string(scene.contact.damping_rule == ContactDampingRule::ratio ? scene.contact.damping : 0.0) +
                              "), integrated independently";

@@ -35,7 +35,9 @@ std::vector<std::string> conventions() {
         "on the first impact (after it, no reference models the engine's impact: not comparable). The half "
         "cycle is judged as 2·t1(θ1) with the measured θ1. rocking_housner's contact damping ζ = 0.386 is "
         "calibrated so that the spring block loses what Housner's impact loses: dem is also judged on "
-        "Housner's amplitudes after three impacts.",
+        "Housner's amplitudes after three impacts. It takes a slender block and kn ≤ ~1e8 (ζ grows with kn: 0.30 at "
+        "1e7, 0.70 at 1e8); for reading B (α = 35°) no damping ratio comes within a factor 2 of Housner's loss "
+        "(docs/validation.md).",
         "friction_stick: H at the centroid lifts the heel (e = H·h/W > B/6): the reference is a rigid block on "
         "a Winkler base whose lightly pressed points slip, u = (μ kn/ks)·d_max·[1 − √(1 − H/(μW))] (1.894 H/(ks·A)), "
         "loaded quasi-statically (8 s ramp, contact damping ratio 0.5); friction_stick_base applies H at the "

@@ -79,3 +79,8 @@ TEST_CASE("spring block: stiff springs give Housner's first impact", "[oracle][s
     REQUIRE_FALSE(soft.impacts.empty());
     CHECK(soft.impacts[0] / hb.first_impact(th0) - 1.0 == Approx(0.0013).margin(5e-4));
 }
+
+TEST_CASE("spring block: a contact too stiff to integrate is refused, not run for ever", "[oracle][spring_block]") {
+    // kn = 1e20 N/m³ would need ~1e12 steps over 3 s
+    CHECK_THROWS_WITH(reading_b(1e20).rock(M_PI / 6, 3.0, 1e-3), Catch::Matchers::Contains("more than 1e8"));
+}
