@@ -12,6 +12,7 @@
 
 #include "engine_settings.hpp"
 #include "error.hpp"
+#include "hexahedron_contact.hpp"
 #include "rigid_blocks.hpp"
 
 namespace cairn {
@@ -69,6 +70,7 @@ private:
     void clear();
     Vec3 com(int block) const;
     Quat orientation(int block) const;
+    Corners world_corners(const RigidBlock& b) const;
     double load_power() const;
 
     Scene scene_;
@@ -107,6 +109,12 @@ Vec3 OdeBackend::com(int block) const {
     if (!b) return blocks_[block].com_world;
     const dReal* p = dBodyGetPosition(b);
     return {p[0], p[1], p[2]};
+}
+
+Corners OdeBackend::world_corners(const RigidBlock& b) const {
+    Corners w;
+    for (int i = 0; i < 8; ++i) w[i] = block_point_world(b, com(b.index), orientation(b.index), b.corners[i]);
+    return w;
 }
 
 Quat OdeBackend::orientation(int block) const {
@@ -247,10 +255,27 @@ void OdeBackend::collide(dGeomID ga, dGeomID gb) {
     if (!ba && !bb) return;   // two fixed blocks
     constexpr int kMax = 4;
     dContact c[kMax];
-    int n = dCollide(ga, gb, kMax, &c[0].geom, sizeof(dContact));
-    if (n == 0) return;
     const auto& a = blocks_[reinterpret_cast<intptr_t>(dGeomGetData(ga))];
     const auto& b = blocks_[reinterpret_cast<intptr_t>(dGeomGetData(gb))];
+    int n = 0;
+    if (a.is_box && b.is_box) {
+        n = dCollide(ga, gb, kMax, &c[0].geom, sizeof(dContact));
+    } else {
+        // ODE's convex-convex collider gives one point per face-on-face pair (a hinge) and a zero
+        // normal for exactly touching faces: cairn's face-clipping collider instead
+        for (const HexContact& h : hexahedron_contacts(world_corners(a), world_corners(b), kMax)) {
+            dContactGeom& g = c[n++].geom;
+            for (int k = 0; k < 3; ++k) {
+                g.pos[k] = h.position[k];
+                g.normal[k] = h.normal[k];
+            }
+            g.depth = h.depth;
+            g.g1 = ga;
+            g.g2 = gb;
+            g.side1 = g.side2 = -1;
+        }
+    }
+    if (n == 0) return;
     PointSpring s;
     if (matched_) s = a.fixed ? matched_point_spring(scene_, b, &a) : matched_point_spring(scene_, a, &b);
     for (int i = 0; i < n; ++i) {
