@@ -2,8 +2,9 @@
 /// Contact points between two convex hexahedra (world corners, kCornerSigns order): separating
 /// axes over the 12 face normals and the edge-edge cross products, then the incident face clipped
 /// against the reference face (as box-box colliders do). ODE 0.16's convex-convex collider gives
-/// one point per face-on-face pair and a zero normal for exactly touching faces, so the ODE
-/// backend uses this one for every pair with a general hexahedron.
+/// one point per face-on-face pair and a zero normal for exactly touching faces, MuJoCo 2.2.2's
+/// mesh collider one point per pair: both backends use this one for every pair with a general
+/// hexahedron.
 
 #include <vector>
 
