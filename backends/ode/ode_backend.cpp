@@ -78,6 +78,7 @@ private:
     Corners world_corners(const RigidBlock& b) const;
     double load_power() const;
     void abandon_world();
+    void forget_world();   // drop every handle into ODE without calling it
 
     Scene scene_;
     std::vector<RigidBlock> blocks_;
@@ -104,6 +105,10 @@ void OdeBackend::clear() {
     if (contacts_) dJointGroupDestroy(contacts_);
     if (space_) dSpaceDestroy(space_);   // destroys the geoms it holds
     if (world_) dWorldDestroy(world_);   // destroys the bodies
+    forget_world();
+}
+
+void OdeBackend::forget_world() {
     contacts_ = nullptr;
     space_ = nullptr;
     world_ = nullptr;
@@ -355,12 +360,7 @@ void OdeBackend::abandon_world() {
     // keep what was last sampled, then let go of the world without another call into it: a
     // destroy on a half-stepped world (a space still locked by its collide) could fault again
     frozen_ = sample();
-    world_ = nullptr;
-    space_ = nullptr;
-    contacts_ = nullptr;
-    bodies_.clear();
-    geoms_.clear();
-    convex_.clear();
+    forget_world();
     faulted_ = true;
 }
 

@@ -15,14 +15,6 @@ namespace {
 constexpr double g = 9.81;
 constexpr double kPi = 3.14159265358979323846;
 
-std::unique_ptr<Backend> build(const std::string& engine, const Scene& scene, const std::string& mode) {
-    auto backend = make_backend(engine);
-    RunOptions options;
-    options.contact_mode = mode;
-    backend->build(scene, options);
-    return backend;
-}
-
 }  // namespace
 
 TEST_CASE("every backend: matched contact oscillates at sqrt(kn A / m)", "[engines][matched]") {
@@ -32,7 +24,7 @@ TEST_CASE("every backend: matched contact oscillates at sqrt(kn A / m)", "[engin
     Scene s = base_scene("stability");
     add_box(s, "A", Vec3(1, 1, 1), Vec3(0, 0, 0.5), false);
     add_box(s, "B", Vec3(1, 1, 1), Vec3(0, 0, -0.5), true);
-    auto b = build(engine, s, "matched");
+    auto b = build_backend(engine, s, "matched");
     const double m = 2600.0, k = 3e7 * 1.0;
     const double period = 2.0 * kPi * std::sqrt(m / k);   // 0.058493 s
     const double rest = m * g / k;                        // 8.502e-4 m
@@ -72,7 +64,7 @@ TEST_CASE("every backend: each interface of a matched stack of three cubes carri
     add_box(s, "B", Vec3(1, 1, 1), Vec3(0, 0, 1.5), false);
     add_box(s, "C", Vec3(1, 1, 1), Vec3(0, 0, 2.5), false);
     add_box(s, "base", Vec3(1, 1, 1), Vec3(0, 0, -0.5), true);
-    auto b = build(engine, s, "matched");
+    auto b = build_backend(engine, s, "matched");
     const long long steps = std::llround(2.0 / b->time_step());
     for (long long i = 0; i < steps; ++i)
         if (b->step() != StepStatus::ok) FAIL(engine << " unstable: " << b->failure());
@@ -97,7 +89,7 @@ TEST_CASE("every backend: the first sample after t = 0 holds the integrated pose
     Scene s = base_scene("first_step");
     add_box(s, "A", Vec3(1, 1, 1), Vec3(0, 0, 10), false);
     s.blocks[0].angular_velocity = Vec3(0, 0, 1.0);   // rad/s
-    auto b = build(engine, s, "rigid");
+    auto b = build_backend(engine, s, "rigid");
     const double dt = b->time_step();
     Sample start = b->sample();
     REQUIRE(b->step() == StepStatus::ok);

@@ -21,10 +21,7 @@ constexpr double g = 9.81;
 // build `scene` on `engine` and step it for `duration` seconds, calling `each` after every step
 std::unique_ptr<Backend> run(const std::string& engine, const Scene& scene, const std::string& mode,
                              double duration, const std::function<void(const Sample&)>& each = {}) {
-    auto backend = make_backend(engine);
-    RunOptions options;
-    options.contact_mode = mode;
-    backend->build(scene, options);
+    auto backend = build_backend(engine, scene, mode);
     const long long steps = std::llround(duration / backend->time_step());
     for (long long i = 0; i < steps; ++i) {
         if (backend->step() != StepStatus::ok) FAIL(engine << " unstable: " << backend->failure());
