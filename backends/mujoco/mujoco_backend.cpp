@@ -79,7 +79,6 @@ private:
     PointSpring pair_spring(const mjContact& c) const;
     double depth_scale(const mjContact& c) const;
 
-
     Scene scene_;
     std::vector<RigidBlock> blocks_;
     std::vector<int> body_;          // MuJoCo body id per block (0 for fixed blocks)

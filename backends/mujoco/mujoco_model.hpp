@@ -3,7 +3,6 @@
 /// axes at the centre of mass), fixed blocks as world geoms, boxes as box geoms, general
 /// hexahedra as mesh geoms.
 
-#include <array>
 #include <string>
 #include <vector>
 
