@@ -108,6 +108,7 @@ JobOutcome execute_run(const RunJob& job) {
     request.overrides = job.overrides;
     request.model_override = job.model;
     request.options.contact_mode = job.contact;
+    request.options.limits = job.limits;
 
     // create the directory now so that a run is never lost for want of it; removed again if the
     // backend refuses the scene

@@ -13,6 +13,13 @@ namespace cairn {
 
 namespace {
 
+std::string short_number(double x) {
+    std::ostringstream o;
+    o.precision(4);
+    o << x;
+    return o.str();
+}
+
 class DemBackend : public Backend {
 public:
     std::string name() const override { return "dem"; }
@@ -22,6 +29,7 @@ public:
         scene_ = scene;
         for (const auto& [key, s] : scene_.backend_settings["dem"])
             throw Error(s.origin + ": backends.dem." + key + ": unknown setting of backend dem (it has none)");
+        dem::check_build_size(scene_, options.limits);
         double min_edge = 1e300;
         for (const auto& def : scene_.blocks)
             for (int s = 0; s < 6; ++s)
@@ -40,7 +48,10 @@ public:
             double dt_e = scene_.run.element_dt_safety * element_critical_;
             dt_ = dt_c > 0.0 && (dt_e == 0.0 || dt_c < dt_e) ? dt_c : dt_e;
             if (!(dt_ > 0.0))
-                throw Error(scene_.source + ": run.dt = \"auto\": no contact stiffness or element to derive a step from; give run.dt");
+                throw Error(scene_.source + ": run.dt = \"auto\": no positive critical step to derive a step from "
+                            "(contact.kn = " + short_number(scene_.contact.kn) + " gives " +
+                            short_number(contact_critical_) + " s, the elements " + short_number(element_critical_) +
+                            " s); give run.dt, or a stiffness whose critical step is not 0");
         }
         world_->start(dt_);
     }

@@ -9,6 +9,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <filesystem>
 
 #include "error.hpp"
@@ -29,6 +30,12 @@ double TimeSeries::at(double t) const {
 namespace scene_detail {
 
 namespace {
+
+std::string format_number(double x) {
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "%.6g", x);
+    return buf;
+}
 
 // two named columns of a CSV file ('#' starts a comment line)
 TimeSeries read_csv(const Item& file_item, const std::string& path, const std::string& time_column,
@@ -80,10 +87,12 @@ void read_ground_motion(const TableReader& root, Scene& scene) {
         gm.source = "inline";
     }
     const auto& ts = gm.acceleration.time;
-    (file ? file : time).check(ts.size() >= 2, "the record needs at least 2 samples");
-    for (size_t i = 1; i < ts.size(); ++i)
-        if (!(ts[i] > ts[i - 1]) || !std::isfinite(ts[i]) || !std::isfinite(gm.acceleration.value[i]))
-            (file ? file : time).fail("times must increase strictly and values be finite (sample " + std::to_string(i) + ")");
+    const Item& record = file ? file : time;
+    record.check(ts.size() >= 2, "the record needs at least 2 samples");
+    for (size_t i = 0; i < ts.size(); ++i)
+        if (!std::isfinite(ts[i]) || (i > 0 && !(ts[i] > ts[i - 1])))
+            record.fail("times must be finite and increase strictly (sample " + std::to_string(i) +
+                        ", t = " + format_number(ts[i]) + " s)");
     double unit = 1.0;
     if (Item it = g.get("units")) {
         const std::string u = it.string();
@@ -94,7 +103,18 @@ void read_ground_motion(const TableReader& root, Scene& scene) {
     }
     double scale = 1.0;
     if (Item it = g.get("scale")) scale = it.number();
-    for (double& v : gm.acceleration.value) v *= unit * scale;
+    // every sample, the first too, must be finite as the engines will see it
+    for (size_t i = 0; i < gm.acceleration.value.size(); ++i) {
+        const double raw = gm.acceleration.value[i], v = raw * unit * scale;
+        if (std::isfinite(v)) {
+            gm.acceleration.value[i] = v;
+            continue;
+        }
+        const Item scale_item = g.get("scale");
+        const Item culprit = std::isfinite(raw) && scale_item ? scale_item : (file ? file : accel);
+        culprit.fail("sample " + std::to_string(i) + ": acceleration " + format_number(raw) + " × units " +
+                     format_number(unit) + " × scale " + format_number(scale) + " is not finite");
+    }
     if (Item it = g.get("direction")) {
         gm.direction = it.vec3();
         it.check(gm.direction.norm() > 0.0, "the direction must not be zero");
