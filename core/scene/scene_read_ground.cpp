@@ -91,7 +91,7 @@ void read_ground_motion(const TableReader& root, Scene& scene) {
     record.check(ts.size() >= 2, "the record needs at least 2 samples");
     for (size_t i = 0; i < ts.size(); ++i)
         if (!std::isfinite(ts[i]) || (i > 0 && !(ts[i] > ts[i - 1])))
-            record.fail("times must be finite and increase strictly (sample " + std::to_string(i) +
+            record.fail("times must increase strictly and be finite (sample " + std::to_string(i) +
                         ", t = " + format_number(ts[i]) + " s)");
     double unit = 1.0;
     if (Item it = g.get("units")) {
