@@ -81,11 +81,7 @@ double grid_points(double len_u, double len_v, double spacing) {
     return count(len_u) * count(len_v);
 }
 
-std::string g(double x) {
-    char buf[32];
-    std::snprintf(buf, sizeof buf, "%.3g", x);
-    return buf;
-}
+std::string g(double x) { return message_number(x, 3); }
 
 }  // namespace
 

@@ -13,13 +13,6 @@ namespace cairn {
 
 namespace {
 
-std::string short_number(double x) {
-    std::ostringstream o;
-    o.precision(4);
-    o << x;
-    return o.str();
-}
-
 class DemBackend : public Backend {
 public:
     std::string name() const override { return "dem"; }
@@ -49,8 +42,8 @@ public:
             dt_ = dt_c > 0.0 && (dt_e == 0.0 || dt_c < dt_e) ? dt_c : dt_e;
             if (!(dt_ > 0.0))
                 throw Error(scene_.source + ": run.dt = \"auto\": no positive critical step to derive a step from "
-                            "(contact.kn = " + short_number(scene_.contact.kn) + " gives " +
-                            short_number(contact_critical_) + " s, the elements " + short_number(element_critical_) +
+                            "(contact.kn = " + message_number(scene_.contact.kn) + " gives " +
+                            message_number(contact_critical_) + " s, the elements " + message_number(element_critical_) +
                             " s); give run.dt, or a stiffness whose critical step is not 0");
         }
         world_->start(dt_);

@@ -14,11 +14,7 @@ namespace cairn {
 
 namespace {
 
-std::string g(double x) {
-    char buf[32];
-    std::snprintf(buf, sizeof buf, "%.4g", x);
-    return buf;
-}
+std::string g(double x) { return message_number(x, 4); }
 
 // "run.dt = 1e-30" or "run.dt = auto (2e-5 s from the critical step, contact.kn = 1e9)"
 std::string dt_text(const Scene& scene, double dt, double critical) {

@@ -3,6 +3,7 @@
 #include <cstdio>
 #include <numeric>
 
+#include "error.hpp"
 #include "geometry/overlap.hpp"
 #include "scene/scene_read.hpp"
 
@@ -17,11 +18,7 @@ double shortest_edge(const Corners& c) {
     return e;
 }
 
-std::string number(double x) {
-    char buf[32];
-    std::snprintf(buf, sizeof buf, "%.3g", x);
-    return buf;
-}
+std::string number(double x) { return message_number(x, 3); }
 
 }  // namespace
 

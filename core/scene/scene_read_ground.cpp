@@ -31,12 +31,6 @@ namespace scene_detail {
 
 namespace {
 
-std::string format_number(double x) {
-    char buf[32];
-    std::snprintf(buf, sizeof buf, "%.6g", x);
-    return buf;
-}
-
 // two named columns of a CSV file ('#' starts a comment line)
 TimeSeries read_csv(const Item& file_item, const std::string& path, const std::string& time_column,
                     const std::string& value_column) {
@@ -92,7 +86,7 @@ void read_ground_motion(const TableReader& root, Scene& scene) {
     for (size_t i = 0; i < ts.size(); ++i)
         if (!std::isfinite(ts[i]) || (i > 0 && !(ts[i] > ts[i - 1])))
             record.fail("times must increase strictly and be finite (sample " + std::to_string(i) +
-                        ", t = " + format_number(ts[i]) + " s)");
+                        ", t = " + message_number(ts[i], 6) + " s)");
     double unit = 1.0;
     if (Item it = g.get("units")) {
         const std::string u = it.string();
@@ -112,8 +106,8 @@ void read_ground_motion(const TableReader& root, Scene& scene) {
         }
         const Item scale_item = g.get("scale");
         const Item culprit = std::isfinite(raw) && scale_item ? scale_item : (file ? file : accel);
-        culprit.fail("sample " + std::to_string(i) + ": acceleration " + format_number(raw) + " × units " +
-                     format_number(unit) + " × scale " + format_number(scale) + " is not finite");
+        culprit.fail("sample " + std::to_string(i) + ": acceleration " + message_number(raw, 6) + " × units " +
+                     message_number(unit, 6) + " × scale " + message_number(scale, 6) + " is not finite");
     }
     if (Item it = g.get("direction")) {
         gm.direction = it.vec3();
