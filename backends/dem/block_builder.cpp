@@ -1,5 +1,6 @@
 #include "block_builder.hpp"
 
+#include <algorithm>
 #include <climits>
 #include <cmath>
 #include <cstdio>

@@ -1,5 +1,6 @@
 #include "scene/scene_limits.hpp"
 
+#include <algorithm>
 #include <cstdio>
 
 #include "error.hpp"
