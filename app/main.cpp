@@ -6,6 +6,7 @@
 
 #include "commands.hpp"
 #include "run/stop.hpp"
+#include "limit_options.hpp"
 
 int main(int argc, char** argv) {
     using namespace cairn;
@@ -29,6 +30,7 @@ int main(int argc, char** argv) {
     run->add_option("--contact", job.contact, "contact mode of the reference engines")
         ->check(CLI::IsMember({"rigid", "matched"}));
     run->add_flag("--quiet,-q", quiet, "no progress line and no summary");
+    add_limit_options(*run, job.limits);
 
     app.add_subcommand("list", "list the shipped scenes and the backends with their capabilities");
 

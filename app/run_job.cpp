@@ -97,6 +97,7 @@ JobOutcome execute_run(const RunJob& job) {
     request.overrides = job.overrides;
     request.model_override = job.model;
     request.options.contact_mode = job.contact;
+    request.options.limits = job.limits;
 
     // the trajectory streams into the staging directory as the run goes; the set (trajectory and
     // run.json, written last) replaces DIR only when complete

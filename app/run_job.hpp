@@ -5,6 +5,8 @@
 #include <string>
 #include <vector>
 
+#include "run/run_limits.hpp"
+
 namespace cairn {
 
 /// What to run and where.
@@ -18,6 +20,7 @@ struct RunJob {
     std::string contact = "rigid";        ///< contact mode of the reference engines
     bool progress = false;                ///< show a progress line on stderr
     std::string label;                    ///< name shown in the progress line
+    RunLimits limits;                     ///< --allow-large, --allow-unstable-dt, --memory-budget
 };
 
 /// How a run ended.

@@ -1,8 +1,13 @@
 #include "block_builder.hpp"
 
+#include <algorithm>
+#include <climits>
 #include <cmath>
+#include <cstdio>
 
 #include "dem/deformable/hex8.hpp"
+#include "error.hpp"
+#include "run/run_limits.hpp"
 
 namespace cairn::dem {
 
@@ -48,7 +53,122 @@ std::vector<std::vector<HitPoint>> hitting_points(const Mesh& mesh, double spaci
     return hits;
 }
 
+// bytes per mesh node: reference, current and rest positions, velocity, force, acceleration,
+// mass-weighted offset (24 B each), lumped mass, fixed flags, incidence and gather indices
+constexpr double kNodeBytes = 220;
+// bytes per element: node lists (mesh, body, batch), batched element forces (192), incidence (64),
+// build-time corners and centroids, and the consistent-mass triplets assembled for every scheme
+// (64 of 16 B, up to twice that while the vector grows)
+constexpr double kElementBytes = 2700;
+// per element with a general (not parallelepiped) shape: Jacobians at 8 Gauss points, and a
+// cached element frequency
+constexpr double kGeneralElementBytes = 800;
+// consistent mass on top: the reduced triplets, the sparse matrix, per node
+constexpr double kConsistentElementBytes = 2100;
+// the Cholesky factor of the consistent mass: fill-in grows like nodes^(4/3) for a 3-D mesh; the
+// factor is fitted to a 30x30x30 block (peak resident memory 296 MB, estimate 313 MiB; lumped
+// 58 MB against an estimate of 78 MiB)
+constexpr double kConsistentFillBytes = 192.0;
+// bytes per hitting point: the point (24), its stick anchor (24), a pending point force (48)
+constexpr double kHitBytes = 96;
+// bytes per point of a side's grid built once for the critical step
+constexpr double kSideGridBytes = 24;
+// bytes per boundary face: its nodes, side and grid slot
+constexpr double kFaceBytes = 24;
+
+// points of hit_grid on a face with edges of these lengths, in double
+double grid_points(double len_u, double len_v, double spacing) {
+    auto count = [&](double len) { return std::max(2.0, std::ceil(len / spacing - 1e-9) + 1.0); };
+    return count(len_u) * count(len_v);
+}
+
+std::string g(double x) { return message_number(x, 3); }
+
 }  // namespace
+
+BuildEstimate estimate_build(const Scene& scene) {
+    BuildEstimate est;
+    const double spacing = scene.contact.grid_spacing;
+    double largest = -1.0;
+    for (size_t bi = 0; bi < scene.blocks.size(); ++bi) {
+        const BlockDef& def = scene.blocks[bi];
+        const bool deformable = def.model == BlockModel::deformable && !def.fixed;
+        double d[3] = {1.0, 1.0, 1.0};
+        if (deformable)
+            for (int k = 0; k < 3; ++k) d[k] = double(def.mesh.divisions[k]);
+        const double nodes = (d[0] + 1) * (d[1] + 1) * (d[2] + 1), elements = d[0] * d[1] * d[2];
+        double mesh = nodes * kNodeBytes + elements * kElementBytes;
+        if (deformable && def.shape == Shape::hexahedron) mesh += elements * kGeneralElementBytes;
+        if (deformable && def.mesh.mass == MassScheme::consistent)
+            mesh += elements * kConsistentElementBytes + std::pow(nodes, 4.0 / 3.0) * kConsistentFillBytes;
+        double hits = 0.0;
+        for (int s = 0; s < 6; ++s) {
+            const auto& fc = kFaceCorners[s];
+            const auto& c = def.corners;
+            const double len_u = std::max((c[fc[1]] - c[fc[0]]).norm(), (c[fc[2]] - c[fc[3]]).norm());
+            const double len_v = std::max((c[fc[3]] - c[fc[0]]).norm(), (c[fc[2]] - c[fc[1]]).norm());
+            // the side's axes: divisions along its first and second edges
+            int u_axis = 0, v_axis = 0;
+            for (int a = 0; a < 3; ++a) {
+                if (kCornerSigns[fc[0]][a] != kCornerSigns[fc[1]][a]) u_axis = a;
+                if (kCornerSigns[fc[0]][a] != kCornerSigns[fc[3]][a]) v_axis = a;
+            }
+            const double faces = d[u_axis] * d[v_axis];
+            const double per_face = grid_points(len_u / d[u_axis], len_v / d[v_axis], spacing);
+            const double side = def.fixed ? 0.0 : grid_points(len_u, len_v, spacing);
+            hits += faces * per_face;
+            mesh += faces * kFaceBytes;
+            est.hit_bytes += side * kSideGridBytes;
+            est.largest_grid = std::max({est.largest_grid, per_face, side});
+        }
+        est.nodes += nodes;
+        est.elements += elements;
+        est.hit_points += hits;
+        est.mesh_bytes += mesh;
+        est.hit_bytes += hits * kHitBytes;
+        if (mesh > largest) largest = mesh, est.largest_mesh = int(bi);
+    }
+    return est;
+}
+
+void check_build_size(const Scene& scene, const RunLimits& limits) {
+    const BuildEstimate est = estimate_build(scene);
+    const double budget = memory_budget(limits);
+    const std::string spacing = "contact.grid_spacing = " + g(scene.contact.grid_spacing);
+    std::string mesh_key;
+    if (est.largest_mesh >= 0) {
+        const BlockDef& b = scene.blocks[size_t(est.largest_mesh)];
+        const auto& d = b.mesh.divisions;
+        mesh_key = "blocks." + b.name + ".mesh.divisions = [" + std::to_string(d[0]) + ", " +
+                   std::to_string(d[1]) + ", " + std::to_string(d[2]) + "]";
+    }
+    const bool hits_dominate = est.hit_bytes >= est.mesh_bytes;
+    const std::string key = scene.source + ": " + (hits_dominate ? spacing : mesh_key) + ": ";
+    // the engine indexes nodes, element incidences and a face's points with 32-bit integers
+    for (const auto& b : scene.blocks) {
+        if (b.model != BlockModel::deformable || b.fixed) continue;
+        const auto& d = b.mesh.divisions;
+        const double nodes = double(d[0] + 1) * double(d[1] + 1) * double(d[2] + 1);
+        const double elements = double(d[0]) * double(d[1]) * double(d[2]);
+        if (nodes > INT_MAX || 8.0 * elements > INT_MAX)
+            throw Error(scene.source + ": blocks." + b.name + ".mesh.divisions = [" + std::to_string(d[0]) + ", " +
+                        std::to_string(d[1]) + ", " + std::to_string(d[2]) + "]: " + g(elements) +
+                        " elements and " + g(nodes) + " nodes, beyond the engine's 32-bit indices (at most " +
+                        g(INT_MAX / 8.0) + " elements)");
+    }
+    if (est.largest_grid > INT_MAX / 2)
+        throw Error(scene.source + ": " + spacing + ": " + g(est.largest_grid) +
+                    " hitting points on one face, beyond the engine's 32-bit indices");
+    if (est.hit_points > kMaxHitPoints && !limits.allow_large)
+        throw Error(scene.source + ": " + spacing + ": " + g(est.hit_points) +
+                    " hitting points on the block faces, beyond the limit of " + g(kMaxHitPoints) +
+                    " (--allow-large lifts it: every step visits each point, 1e6 points take about 0.05 s a step)");
+    if (est.bytes() > budget)
+        throw Error(key + "the model would take about " + bytes_text(est.bytes()) + " (" + g(est.elements) +
+                    " elements, " + g(est.nodes) + " nodes, " + g(est.hit_points) +
+                    " hitting points), beyond the memory budget of " + bytes_text(budget) +
+                    " (default half of the machine's memory; --memory-budget changes it)");
+}
 
 Block make_block(const BlockDef& def, const Scene& scene) {
     const Material& mat = scene.materials[def.material];

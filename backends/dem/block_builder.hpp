@@ -2,9 +2,34 @@
 /// Building engine blocks from scene blocks, and locating material points in them.
 
 #include "block.hpp"
+#include "run/run_limits.hpp"
 #include "scene/scene.hpp"
 
 namespace cairn::dem {
+
+/// The memory a scene's model will take, estimated before anything is allocated.
+struct BuildEstimate {
+    double mesh_bytes = 0.0;       ///< nodes, elements, mass matrices of every block, bytes
+    double hit_bytes = 0.0;        ///< hitting points and their contact state, bytes
+    double nodes = 0.0;            ///< mesh nodes of every block
+    double elements = 0.0;         ///< hex8 elements of every block
+    double hit_points = 0.0;       ///< hitting points of every face (and the sides' critical-step grids)
+    double largest_grid = 0.0;     ///< most points of one hitting grid (a face, or a side for the critical step)
+    int largest_mesh = -1;         ///< index of the block whose mesh takes the most
+    double bytes() const { return mesh_bytes + hit_bytes; }
+};
+
+/// the estimate for `scene` (counts in double: nothing overflows, whatever the divisions or spacing)
+BuildEstimate estimate_build(const Scene& scene);
+
+/// most hitting points of a scene without RunLimits::allow_large
+constexpr double kMaxHitPoints = 1e6;
+
+/// throw cairn::Error naming the file, the key and its value (the largest block's
+/// mesh.divisions, or contact.grid_spacing) when the estimate exceeds the memory budget of
+/// `limits`, when the hitting points pass kMaxHitPoints (unless allow_large), or when a count
+/// would overflow the engine's 32-bit indices; called before the model is built
+void check_build_size(const Scene& scene, const RunLimits& limits);
 
 /// a block of the engine from its definition: rigid (one element, pose and momenta) or
 /// deformable (its mesh, mass scheme and β from the scene); fixed blocks are always rigid

@@ -22,6 +22,7 @@ public:
         scene_ = scene;
         for (const auto& [key, s] : scene_.backend_settings["dem"])
             throw Error(s.origin + ": backends.dem." + key + ": unknown setting of backend dem (it has none)");
+        dem::check_build_size(scene_, options.limits);
         double min_edge = 1e300;
         for (const auto& def : scene_.blocks)
             for (int s = 0; s < 6; ++s)
@@ -40,7 +41,10 @@ public:
             double dt_e = scene_.run.element_dt_safety * element_critical_;
             dt_ = dt_c > 0.0 && (dt_e == 0.0 || dt_c < dt_e) ? dt_c : dt_e;
             if (!(dt_ > 0.0))
-                throw Error(scene_.source + ": run.dt = \"auto\": no contact stiffness or element to derive a step from; give run.dt");
+                throw Error(scene_.source + ": run.dt = \"auto\": no positive critical step to derive a step from "
+                            "(contact.kn = " + message_number(scene_.contact.kn) + " gives " +
+                            message_number(contact_critical_) + " s, the elements " + message_number(element_critical_) +
+                            " s); give run.dt, or a stiffness whose critical step is not 0");
         }
         world_->start(dt_);
     }

@@ -79,7 +79,12 @@ double quad_area(const Quad& c) {
 std::array<int, 2> hit_grid_counts(const Quad& c, double spacing) {
     double len_xi = std::max((c[1] - c[0]).norm(), (c[2] - c[3]).norm());
     double len_eta = std::max((c[3] - c[0]).norm(), (c[2] - c[1]).norm());
-    auto count = [&](double len) { return std::max(2, int(std::ceil(len / spacing - 1e-9)) + 1); };
+    // in double, then clamped: a spacing far below the face size must not overflow the count
+    // (check_build_size refuses such a grid before it is built)
+    auto count = [&](double len) {
+        const double n = std::ceil(len / spacing - 1e-9) + 1.0;
+        return n >= 2.0 && n < 1e9 ? int(n) : (n >= 1e9 ? int(1e9) : 2);
+    };
     return {count(len_xi), count(len_eta)};
 }
 
@@ -87,7 +92,7 @@ std::vector<HitPoint> hit_grid(const Quad& c, double spacing) {
     const auto [nu, nv] = hit_grid_counts(c, spacing);
     double du = 2.0 / (nu - 1), dv = 2.0 / (nv - 1);
     std::vector<HitPoint> pts;
-    pts.reserve(nu * nv);
+    pts.reserve(size_t(nu) * size_t(nv));
     for (int j = 0; j < nv; ++j)
         for (int i = 0; i < nu; ++i) {
             HitPoint h;

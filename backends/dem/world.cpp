@@ -58,6 +58,10 @@ bool World::step() {
     t_ += dt_;
     compute_forces();
     kick(0.5 * dt_);
+    if (!inversion_.empty()) {
+        failure_ = inversion_;
+        return false;
+    }
     if (!state_finite()) {
         failure_ = "the state is no longer finite (NaN or infinity)";
         return false;
@@ -162,6 +166,7 @@ void World::compute_forces() {
             const auto& m = b.deformable->lumped_mass();
             for (size_t n = 0; n < b.x.size(); ++n) b.f[n] += m[n] * scene_.gravity;
             energy_.strain += b.deformable->add_internal_forces(b.x, b.v, b.f);
+            if (b.deformable->inverted_element() >= 0 && inversion_.empty()) inversion_ = inversion_message(i);
             energy_.dissipated += b.deformable->damping_power() * dt_;
             element_updates_ += (long long)b.deformable->element_count();
             b.deformable->accelerations(b.x, b.f, accel_[i]);
@@ -174,6 +179,20 @@ void World::compute_forces() {
             torque_[i] += (b.x[n] - b.body.x).cross(b.f[n]);
         }
     }
+}
+
+std::string World::inversion_message(size_t i) const {
+    const Block& b = blocks_[i];
+    const int e = b.deformable->inverted_element();
+    const auto& d = b.mesh.divisions;
+    const double young = scene_.materials[size_t(scene_.blocks[i].material)].young;
+    std::ostringstream m;
+    m << "block " << b.name << ": element " << e << " (cell " << e % d[0] << ", " << (e / d[0]) % d[1] << ", "
+      << e / (d[0] * d[1]) << " of its " << d[0] << "x" << d[1] << "x" << d[2] << " mesh) turned inside out at t = "
+      << t_ << " s (det F = " << b.deformable->inverted_det()
+      << " <= 0 at a Gauss point): the material is too soft for the loads (young = " << young
+      << " Pa) or the time step too large";
+    return m.str();
 }
 
 bool World::state_finite() const {

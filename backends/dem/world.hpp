@@ -28,8 +28,9 @@ public:
     void start(double dt);
     /// advance one step; false if the run can no longer be trusted (see failure())
     bool step();
-    /// why the last step failed: the state is not finite, or a block sank into another by more
-    /// than a quarter of the smaller block's shortest edge
+    /// why the last step failed: an element of a deformable block turned inside out (det F <= 0
+    /// at a Gauss point), the state is not finite, or a block sank into another by more than a
+    /// quarter of the smaller block's shortest edge
     const std::string& failure() const { return failure_; }
     /// simulated time, s
     double time() const { return t_; }
@@ -54,6 +55,7 @@ private:
     void drift();
     void compute_forces();
     bool state_finite() const;
+    std::string inversion_message(size_t block) const;
 
     const Scene& scene_;
     double dt_ = 0.0;
@@ -66,6 +68,7 @@ private:
     EnergyAccounts energy_;
     int active_ = 0;
     std::string failure_;
+    std::string inversion_;   // the first element inversion seen, kept until step() reports it
     ContactTotals last_contact_;
     std::vector<Vec3> force_, torque_;          // rigid blocks: resultant of the current step
     std::vector<std::vector<Vec3>> accel_;      // deformable blocks: nodal accelerations

@@ -30,6 +30,7 @@ void run_pool(const std::vector<PoolJob>& jobs, const PoolOptions& options,
             auto backend = make(job.backend);
             RunOptions ro;
             ro.contact_mode = job.contact_mode;
+            ro.limits.allow_unstable_dt = true;   // the benches map stability beyond the critical step
             RunResult res = run_scene(*backend, *job.scene, ro);
             walls.push_back(res.wall_seconds);
             if (k == 0) {

@@ -8,6 +8,7 @@
 
 #include "backend/capabilities.hpp"
 #include "geometry/types.hpp"
+#include "run/run_limits.hpp"
 #include "scene/scene.hpp"
 
 namespace cairn {
@@ -15,6 +16,7 @@ namespace cairn {
 /// Options of one run that are not part of the scene file.
 struct RunOptions {
     std::string contact_mode = "rigid";   ///< reference engines: "rigid" or "matched"
+    RunLimits limits;                     ///< what the run may cost (steps, rows, memory, dt)
 };
 
 /// Pose and velocity of one free block, world frame.

@@ -4,6 +4,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <limits>
 
 #include "error.hpp"
 #include "geometry/hexahedron.hpp"
@@ -82,13 +83,9 @@ RunResult run_scene(Backend& backend, const Scene& scene, const RunOptions& opti
     RunResult r;
     r.dt = backend.time_step();
     r.critical_step = backend.critical_step();
-    if (!(r.dt > 0.0) || !std::isfinite(r.dt))
-        throw Error("backend " + backend.name() + " gave time step " + format_g("%g", r.dt) +
-                    " s for scene " + scene.name + " (must be positive and finite)");
-    const double interval = scene.run.output_interval;
-    r.output_every = std::max(1, int(std::lround(interval / r.dt)));
-    const long long total_steps =
-        std::max(0LL, (long long)std::ceil(scene.run.duration / r.dt - 1e-9));
+    const RunSize size = check_run_size(scene, backend.name(), r.dt, r.critical_step, options.limits);
+    r.output_every = int(std::min<long long>(size.output_every, std::numeric_limits<int>::max()));
+    const long long total_steps = size.steps;
 
     const double gravity_scale = potential_scale(scene);
     double motion_scale = 0.0;   // max over earlier samples of |kinetic| + |contact| + |strain|, J

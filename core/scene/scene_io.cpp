@@ -4,6 +4,7 @@
 #include <sstream>
 
 #include "error.hpp"
+#include "scene/scene_limits.hpp"
 #include "scene/scene_read.hpp"
 #include "scene/toml_reader.hpp"
 
@@ -28,8 +29,24 @@ std::string quoted(const std::string& text) {
     return out + "\"";
 }
 
+// refuse what the TOML parser must not see: control characters, invalid UTF-8, too many key
+// parts, a value beyond the size or nesting limits
+void check_override_text(const Override& o) {
+    const std::string key = "--set " + printable(o.key);
+    if (auto p = text_problem(o.key, false); !p.empty()) throw Error(key + ": the key contains " + p);
+    if (auto p = text_problem(o.value, true); !p.empty())
+        throw Error(key + " = " + printable(o.value) + ": the value contains " + p);
+    int parts = 1;
+    for (char c : o.key) parts += c == '.';
+    if (parts > kMaxKeyParts)
+        throw Error(key + ": a key of " + std::to_string(parts) + " parts, beyond the limit of " +
+                    std::to_string(kMaxKeyParts));
+    check_toml_limits(o.value, key);
+}
+
 // set the override into the document at its dotted path, creating tables on the way
 void apply_override(toml::table& root, const Override& o, scene_detail::Sources& src) {
+    check_override_text(o);
     const std::string origin = "--set " + o.key;
     // the value as TOML; if that fails, the text as a string
     std::string text = "v = " + o.value;
@@ -38,7 +55,12 @@ void apply_override(toml::table& root, const Override& o, scene_detail::Sources&
         parsed = toml::parse(text, std::string(origin));
     } catch (const toml::parse_error&) {
         text = "v = " + quoted(o.value);
-        parsed = toml::parse(text, std::string(origin));
+        try {
+            parsed = toml::parse(text, std::string(origin));
+        } catch (const toml::parse_error& e) {
+            throw Error(origin + " = " + printable(o.value) + ": not a TOML value nor a string: " +
+                        std::string(e.description()));
+        }
     }
     src.add(origin, text);
 
@@ -87,6 +109,7 @@ Scene load_scene(const std::string& path, const std::vector<Override>& overrides
 
 Scene parse_scene(const std::string& toml_text, const std::string& source,
                   const std::vector<Override>& overrides) {
+    check_toml_limits(toml_text, source);
     scene_detail::Sources src;
     src.add(source, toml_text);
     toml::table root;

@@ -190,6 +190,7 @@ Scene read_scene(const Sources& src, const toml::table& root_table, const std::s
     scene.contact = read_contact(root);
     scene.damping = read_damping(root);
     read_blocks(root, scene);
+    check_overlaps(root, scene);
     read_loads(root, scene);
     read_ground_motion(root, scene);
     read_probes(root, scene);

@@ -13,6 +13,11 @@ Scene read_scene(const Sources& src, const toml::table& root, const std::string&
 
 /// [blocks.NAME] (needs scene.materials)
 void read_blocks(const TableReader& root, Scene& scene);
+/// blocks may overlap at t = 0 by at most this fraction of the smaller block's shortest edge
+/// (touching blocks, and the small initial penetrations of a scene set at its static rest)
+constexpr double kOverlapTolerance = 0.01;
+/// refuse two blocks (not both fixed) that overlap at t = 0 by more than the tolerance
+void check_overlaps(const TableReader& root, const Scene& scene);
 /// [loads.NAME] (needs scene.blocks)
 void read_loads(const TableReader& root, Scene& scene);
 /// [ground_motion] (needs scene.blocks and scene.source): adds one body load per free block

@@ -4,10 +4,18 @@
 
 #include "error.hpp"
 #include "geometry/hexahedron.hpp"
+#include "scene/scene_limits.hpp"
 
 namespace cairn::scene_detail {
 
 namespace {
+
+// a block or probe name becomes CSV column names (B.x, P.x): refuse what would break the header
+void check_name(const TableReader& all, const std::string& name) {
+    const std::string problem = column_name_problem(name);
+    if (problem.empty()) return;
+    Item(all.sources(), all.table().get(name), all.path_of(printable(name))).fail(problem);
+}
 
 // {axis = [..], angle = rad} or {quaternion = [w, x, y, z]}
 Quat read_orientation(const Item& item) {
@@ -70,6 +78,7 @@ MeshDef read_mesh(const Item& item) {
 }
 
 BlockDef read_block(const TableReader& all, const std::string& name, const Scene& scene) {
+    check_name(all, name);
     TableReader b = sub_table(all, name, {"shape", "size", "corners", "position", "orientation",
                                           "pivot", "velocity", "angular_velocity", "material",
                                           "fixed", "model", "mesh"});
@@ -184,6 +193,7 @@ void read_probes(const TableReader& root, Scene& scene) {
     if (!section) return;
     TableReader all(root.sources(), section.table(), "probes");
     for (auto&& [k, v] : all.table()) {
+        check_name(all, std::string(k.str()));
         TableReader p = sub_table(all, std::string(k.str()), {"block", "point", "corner"});
         ProbeDef probe;
         probe.name = std::string(k.str());

@@ -9,6 +9,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <filesystem>
 
 #include "error.hpp"
@@ -80,10 +81,12 @@ void read_ground_motion(const TableReader& root, Scene& scene) {
         gm.source = "inline";
     }
     const auto& ts = gm.acceleration.time;
-    (file ? file : time).check(ts.size() >= 2, "the record needs at least 2 samples");
-    for (size_t i = 1; i < ts.size(); ++i)
-        if (!(ts[i] > ts[i - 1]) || !std::isfinite(ts[i]) || !std::isfinite(gm.acceleration.value[i]))
-            (file ? file : time).fail("times must increase strictly and values be finite (sample " + std::to_string(i) + ")");
+    const Item& record = file ? file : time;
+    record.check(ts.size() >= 2, "the record needs at least 2 samples");
+    for (size_t i = 0; i < ts.size(); ++i)
+        if (!std::isfinite(ts[i]) || (i > 0 && !(ts[i] > ts[i - 1])))
+            record.fail("times must increase strictly and be finite (sample " + std::to_string(i) +
+                        ", t = " + message_number(ts[i], 6) + " s)");
     double unit = 1.0;
     if (Item it = g.get("units")) {
         const std::string u = it.string();
@@ -94,7 +97,18 @@ void read_ground_motion(const TableReader& root, Scene& scene) {
     }
     double scale = 1.0;
     if (Item it = g.get("scale")) scale = it.number();
-    for (double& v : gm.acceleration.value) v *= unit * scale;
+    // every sample, the first too, must be finite as the engines will see it
+    for (size_t i = 0; i < gm.acceleration.value.size(); ++i) {
+        const double raw = gm.acceleration.value[i], v = raw * unit * scale;
+        if (std::isfinite(v)) {
+            gm.acceleration.value[i] = v;
+            continue;
+        }
+        const Item scale_item = g.get("scale");
+        const Item culprit = std::isfinite(raw) && scale_item ? scale_item : (file ? file : accel);
+        culprit.fail("sample " + std::to_string(i) + ": acceleration " + message_number(raw, 6) + " × units " +
+                     message_number(unit, 6) + " × scale " + message_number(scale, 6) + " is not finite");
+    }
     if (Item it = g.get("direction")) {
         gm.direction = it.vec3();
         it.check(gm.direction.norm() > 0.0, "the direction must not be zero");

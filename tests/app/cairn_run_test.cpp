@@ -83,9 +83,9 @@ TEST_CASE("cairn run that goes unstable keeps a partial trajectory and exits 3",
     const std::string out = " --out " + (dir / "run").string();
     REQUIRE(run_cairn("run " + kStability + out, dir).exit_code == 0);
     // dt far above the critical step of the contact spring (~1.1e-2 s for this scene): the
-    // explicit integrator must blow up
+    // explicit integrator must blow up (--allow-unstable-dt: such a dt is refused otherwise)
     const auto r = run_cairn("run paper/stability --backend dem --set run.dt=0.05 --set run.duration=5"
-                         " -q --force" + out, dir);
+                         " --allow-unstable-dt -q --force" + out, dir);
     CHECK(r.exit_code == 3);
     CHECK_THAT(r.err, Contains("unstable at t = ") && Contains("critical step"));
     CHECK(fs::exists(dir / "run" / "trajectory.partial.csv"));

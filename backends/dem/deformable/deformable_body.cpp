@@ -107,6 +107,7 @@ DeformableBody::DeformableBody(const Mesh& mesh, const Material& mat, MassScheme
             if (last[n] >= 0) ready_[slot[last[n]]++] = int(n);
     }
     batch_power_.assign(batch_.batch_count(), 0.0);
+    min_det_.assign(batch_.batch_count() * Hex8Batch::kLanes, 1.0);
 
     // exact inertia: the consistent mass integrates ρ·r⊗r exactly for trilinear geometry
     for (const auto& t : mc) {
@@ -167,7 +168,8 @@ double DeformableBody::add_internal_forces(const std::vector<Vec3>& x, const std
     constexpr long kChunk = 16;
     if (nb < 16) {
         for (long b = 0; b < nb; ++b)
-            batch_energy_[b] = batch_.compute(size_t(b), lame_, xp, vp, beta_, forces, batch_power_[b]);
+            batch_energy_[b] = batch_.compute(size_t(b), lame_, xp, vp, beta_, forces, batch_power_[b],
+                                              min_det_.data() + b * Hex8Batch::kLanes);
         for (int n : ready_) gather(n);
     } else {
 #pragma omp parallel
@@ -181,7 +183,8 @@ double DeformableBody::add_internal_forces(const std::vector<Vec3>& x, const std
             for (long c0 = b0; c0 < b1; c0 += kChunk) {
                 const long c1 = std::min(c0 + kChunk, b1);
                 for (long b = c0; b < c1; ++b)
-                    batch_energy_[b] = batch_.compute(size_t(b), lame_, xp, vp, beta_, forces, batch_power_[b]);
+                    batch_energy_[b] = batch_.compute(size_t(b), lame_, xp, vp, beta_, forces, batch_power_[b],
+                                              min_det_.data() + b * Hex8Batch::kLanes);
                 for (int k = ready_start_[c0]; k < ready_start_[c1]; ++k)
                     if (first_batch_[ready_[k]] >= b0) gather(ready_[k]);
             }
@@ -193,6 +196,14 @@ double DeformableBody::add_internal_forces(const std::vector<Vec3>& x, const std
     double energy = 0.0;
     damping_power_ = 0.0;
     for (long b = 0; b < nb; ++b) energy += batch_energy_[b], damping_power_ += batch_power_[b];
+    // the first inverted element, in element order (padding lanes repeat the last real element)
+    inverted_element_ = -1;
+    for (size_t e = 0; e < elements_.size(); ++e)
+        if (min_det_[e] <= 0.0) {
+            inverted_element_ = int(e);
+            inverted_det_ = min_det_[e];
+            break;
+        }
     return energy;
 }
 

@@ -44,6 +44,11 @@ public:
     const std::vector<char>& fixed_nodes() const { return fixed_; }
     /// elements processed per call of add_internal_forces
     size_t element_count() const { return elements_.size(); }
+    /// after add_internal_forces: the first element with det F <= 0 at a Gauss point (turned
+    /// inside out), or -1
+    int inverted_element() const { return inverted_element_; }
+    /// det F of that element at its worst Gauss point (<= 0)
+    double inverted_det() const { return inverted_det_; }
 
 private:
     Mat3 lumped_inertia_world(const std::vector<Vec3>& x, Vec3& centre) const;
@@ -65,6 +70,9 @@ private:
     std::vector<char> fixed_;
     AlignedDoubles element_forces_;                  // per element (batch layout), gathered per node
     std::vector<double> batch_energy_, batch_power_;
+    std::vector<double> min_det_;                    // per element (batch layout): smallest det F
+    int inverted_element_ = -1;
+    double inverted_det_ = 1.0;
     std::vector<int> incidence_start_;               // node → its element forces, CSR
     std::vector<size_t> incidence_;                  // Hex8Batch::force_index of each incidence
     std::vector<int> ready_start_, ready_;           // batch → nodes whose last element it holds, CSR

@@ -104,7 +104,7 @@ inline void natural_gradient(const vd* m, double g, vd out[3][4]) {
 
 template <bool kParallelepiped, bool kDamping>
 double batch_force(const std::array<std::array<int, L>, 8>& node, const double* geom, const Lame& lm,
-                   const Vec3* x, const Vec3* v, double beta, double* out, double& power) {
+                   const Vec3* x, const Vec3* v, double beta, double* out, double& power, double* min_det) {
     const double g = 1.0 / std::sqrt(3.0);
     // gather the nodes per component in Walsh order, then their modes
     vd xm[3][8], vm[3][8];
@@ -123,6 +123,8 @@ double batch_force(const std::array<std::array<int, L>, 8>& node, const double* 
     const vd two_mu = splat(2.0 * lm.mu), lambda = splat(lm.lambda), half_lambda = splat(0.5 * lm.lambda);
     const vd mu = splat(lm.mu), two_mu_beta = splat(2.0 * lm.mu * beta), lambda_beta = splat(lm.lambda * beta);
     vd energy = vd{}, pw = vd{};
+    double det_min[L];   // per lane: the smallest det F over the Gauss points (inversion check)
+    for (int l = 0; l < L; ++l) det_min[l] = 1e300;
     // acc[c][k]: Σ_g Q_ck·{1, σ_d1, σ_d2, σ_d1·σ_d2} with Q = w·P·J⁻ᵀ/8
     vd acc[3][3][4] = {};
     for (int gp = 0; gp < 8; ++gp) {
@@ -142,6 +144,11 @@ double batch_force(const std::array<std::array<int, L>, 8>& node, const double* 
                 if (kDamping)
                     fd[c][j] = fma(vg[c][2][combo[2]], ji[2][j], fma(vg[c][1][combo[1]], ji[1][j], vg[c][0][combo[0]] * ji[0][j]));
             }
+        // det F: an element turned inside out has det F <= 0 at some Gauss point
+        const vd det = f[0][0] * (f[1][1] * f[2][2] - f[1][2] * f[2][1]) -
+                       f[0][1] * (f[1][0] * f[2][2] - f[1][2] * f[2][0]) +
+                       f[0][2] * (f[1][0] * f[2][1] - f[1][1] * f[2][0]);
+        for (int l = 0; l < L; ++l) det_min[l] = det[l] < det_min[l] ? det[l] : det_min[l];
         // Green–Lagrange strain E = ½(FᵀF − I), symmetric: 00 11 22 01 02 12
         constexpr int I[6] = {0, 1, 2, 0, 0, 1}, J[6] = {0, 1, 2, 1, 2, 2};
         vd e[6], s[6];
@@ -205,6 +212,7 @@ double batch_force(const std::array<std::array<int, L>, 8>& node, const double* 
         walsh(phi);
         for (int n = 0; n < 8; ++n) store(out + (3 * n + c) * L, phi[walsh_index(n)]);
     }
+    for (int l = 0; l < L; ++l) min_det[l] = det_min[l];
     power = kDamping ? lane_sum(pw) : 0.0;
     return lane_sum(energy);
 }
@@ -284,22 +292,23 @@ Hex8Batch::Hex8Batch(const std::vector<Vec3>& ref, const std::vector<std::array<
 }
 
 double Hex8Batch::compute(size_t b, const Lame& lame, const Vec3* x, const Vec3* v, double beta, double* forces,
-                          double& power) const {
+                          double& power, double* min_det) const {
     const Batch& batch = batches_[b];
     const double* geom = geometry_.data() + batch.geometry;
     double* out = forces + b * kForceStride;
     const bool damping = beta > 0.0 && v != nullptr;
     if (batch.parallelepiped)
-        return damping ? batch_force<true, true>(batch.node, geom, lame, x, v, beta, out, power)
-                       : batch_force<true, false>(batch.node, geom, lame, x, v, beta, out, power);
-    return damping ? batch_force<false, true>(batch.node, geom, lame, x, v, beta, out, power)
-                   : batch_force<false, false>(batch.node, geom, lame, x, v, beta, out, power);
+        return damping ? batch_force<true, true>(batch.node, geom, lame, x, v, beta, out, power, min_det)
+                       : batch_force<true, false>(batch.node, geom, lame, x, v, beta, out, power, min_det);
+    return damping ? batch_force<false, true>(batch.node, geom, lame, x, v, beta, out, power, min_det)
+                   : batch_force<false, false>(batch.node, geom, lame, x, v, beta, out, power, min_det);
 }
 
 double hex8_batch_flops(bool damping) {
     // per element, as coded above (fused multiply-add = 2; sign accumulations = 1)
     const double modes = 3 * 24, gradients = 3 * (4 + 3 * 8);
     const double per_gp = 54      // F = (∂x/∂ξ)·J⁻¹
+                          + 14    // det F (inversion check)
                           + 30    // FᵀF
                           + 11    // E, tr E
                           + 10    // S

@@ -57,9 +57,10 @@ public:
     /// internal forces (N) of batch b for node positions x (m) into forces (kForceStride
     /// doubles at b·kForceStride, 64-byte aligned store); returns the batch's strain energy (J).
     /// With beta > 0 (s) adds the strain-rate damping force for velocities v (m/s) and sets
-    /// power to its dissipated power (W), otherwise power = 0.
+    /// power to its dissipated power (W), otherwise power = 0. min_det (kLanes doubles) receives
+    /// each lane's smallest det F over its Gauss points (<= 0: the element is inverted).
     double compute(size_t b, const Lame& lame, const Vec3* x, const Vec3* v, double beta, double* forces,
-                   double& power) const;
+                   double& power, double* min_det) const;
 
 private:
     struct Batch {

@@ -2,6 +2,9 @@
 // free block; bad records are refused with file, line, key and value.
 #include <catch2/catch.hpp>
 
+#include <filesystem>
+#include <fstream>
+
 #include "scene_fixture.hpp"
 
 using namespace cairn;
@@ -46,4 +49,34 @@ TEST_CASE("bad ground motions are refused with file, line, key and value", "[sce
                Contains("ground_motion.acceleration"));
     CHECK_THAT(error_of(with_extra("[ground_motion]\nfile = \"x.csv\"\ntime = [0, 1]\n")),
                Contains("not both"));
+}
+
+TEST_CASE("every sample, the first too, is finite after units and scale", "[scene][ground][limits]") {
+    const auto dir = std::filesystem::path(CAIRN_BINARY_DIR) / "test_scratch" / "core" / "ground";
+    std::filesystem::create_directories(dir);
+    // 1e308 g is finite as written and infinite in m/s²: the first sample, after the units
+    std::ofstream(dir / "huge.csv") << "t_s,accel_g\n0,1e308\n0.02,0\n";
+    const std::string scene = (dir / "t.toml").string();
+    std::string msg;
+    try {
+        parse_scene(with_extra("[ground_motion]\nfile = \"huge.csv\"\n"), scene);
+    } catch (const Error& e) {
+        msg = e.what();
+    }
+    CHECK_THAT(msg, Contains("t.toml:21: ground_motion.file = \"huge.csv\": sample 0: acceleration 1e+308 × units 9.81 "
+                             "× scale 1 is not finite"));
+    // finite samples that overflow with the scale: the scale is named
+    CHECK_THAT(error_of(with_extra("[ground_motion]\ntime = [0, 1]\nacceleration = [1e300, 1]\nunits = \"m/s2\"\n"
+                                   "scale = 1e10\n")),
+               Contains("bad.toml:24: ground_motion.scale = 1e10: sample 0: acceleration 1e+300 × units 1 × scale "
+                        "1e+10 is not finite"));
+    // a non-finite first time is refused as well
+    std::ofstream(dir / "badtime.csv") << "t_s,accel_g\n1e400,0\n0.02,0\n";
+    try {
+        parse_scene(with_extra("[ground_motion]\nfile = \"badtime.csv\"\n"), scene);
+        msg.clear();
+    } catch (const Error& e) {
+        msg = e.what();
+    }
+    CHECK_THAT(msg, Contains("ground_motion.file = \"badtime.csv\": ") && Contains("(sample 0"));
 }
