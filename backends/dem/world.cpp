@@ -164,7 +164,7 @@ void World::compute_forces() {
             energy_.strain += b.deformable->add_internal_forces(b.x, b.v, b.f);
             energy_.dissipated += b.deformable->damping_power() * dt_;
             element_updates_ += (long long)b.deformable->element_count();
-            b.deformable->accelerations(b.x, b.f, accel_[i]);
+            b.deformable->accelerations(b.x, b.v, b.f, accel_[i]);
             continue;
         }
         force_[i] = b.body.mass * scene_.gravity;

@@ -213,7 +213,8 @@ void DeformableBody::rotation_inertias(const std::vector<Vec3>& x, Vec3& centre,
     target = rot * target_inertia_ * rot.transpose();
 }
 
-void DeformableBody::accelerations(const std::vector<Vec3>& x, const std::vector<Vec3>& f, std::vector<Vec3>& a) {
+void DeformableBody::accelerations(const std::vector<Vec3>& x, const std::vector<Vec3>& v,
+                                   const std::vector<Vec3>& f, std::vector<Vec3>& a) {
     const size_t nn = x.size();
     if (scheme_ == MassScheme::consistent) {
         for (size_t n = 0; n < nn; ++n)
@@ -237,13 +238,22 @@ void DeformableBody::accelerations(const std::vector<Vec3>& x, const std::vector
     }
     for (size_t n = 0; n < nn; ++n) a[n] = fixed_[n] ? Vec3::Zero() : Vec3(f[n] / lumped_[n]);
     if (!rotation_correction_) return;
-    // rigid rotations get the target inertia T instead of the lumped G: a += (T⁻¹ − G⁻¹)τ × r
+    // the lumped nodes alone turn as a body of inertia G: ω̇ = G⁻¹(τ − ω×Gω). The rigid rotation
+    // must follow Euler's equation with the target inertia T, ω̇ = T⁻¹(τ − ω×Tω): add the
+    // difference as a rigid angular acceleration, a += δ × r, with ω = G⁻¹L of the lumped nodes
+    // (exact for a rigid motion). Without the gyroscopic terms this is the (T⁻¹ − G⁻¹)τ of the
+    // mass matrix alone; they cancel only where T is proportional to G.
     Vec3 c;
     Mat3 g, t;
     rotation_inertias(x, c, g, t);
-    Vec3 torque = Vec3::Zero();
-    for (size_t n = 0; n < nn; ++n) torque += (x[n] - c).cross(f[n]);
-    Vec3 delta = t.ldlt().solve(torque) - g.ldlt().solve(torque);
+    Vec3 torque = Vec3::Zero(), momentum = Vec3::Zero();
+    for (size_t n = 0; n < nn; ++n) {
+        torque += (x[n] - c).cross(f[n]);
+        momentum += lumped_[n] * (x[n] - c).cross(v[n]);
+    }
+    const auto g_ldlt = g.ldlt();
+    const Vec3 w = g_ldlt.solve(momentum);
+    const Vec3 delta = t.ldlt().solve(torque - w.cross(t * w)) - g_ldlt.solve(torque - w.cross(g * w));
     for (size_t n = 0; n < nn; ++n) a[n] += delta.cross(x[n] - c);
 }
 

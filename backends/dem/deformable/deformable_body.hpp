@@ -22,8 +22,11 @@ public:
     /// subtract internal (and β-damping) forces from f for positions x and velocities v;
     /// returns the strain energy (J) and sets damping_power() (W)
     double add_internal_forces(const std::vector<Vec3>& x, const std::vector<Vec3>& v, std::vector<Vec3>& f);
-    /// nodal accelerations a = M⁻¹ f (fixed nodes get zero)
-    void accelerations(const std::vector<Vec3>& x, const std::vector<Vec3>& f, std::vector<Vec3>& a);
+    /// nodal accelerations (m/s²) under the nodal forces f (N) at positions x (m) and velocities
+    /// v (m/s): a = M⁻¹ f, plus for `barycentre`/`corrected` the gyroscopic term of their
+    /// configuration-dependent mass (fixed nodes get zero)
+    void accelerations(const std::vector<Vec3>& x, const std::vector<Vec3>& v, const std::vector<Vec3>& f,
+                       std::vector<Vec3>& a);
     /// kinetic energy ½ vᵀ M v, J
     double kinetic_energy(const std::vector<Vec3>& x, const std::vector<Vec3>& v) const;
     /// best-fit rigid pose: centre of mass (m) and rotation block frame → world (polar decomposition)
