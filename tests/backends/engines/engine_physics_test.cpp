@@ -9,7 +9,9 @@
 #include <Eigen/Cholesky>
 
 #include "engine_scenes.hpp"
+#include "cases/case_analysis.hpp"
 #include "registry.hpp"
+#include "scene/scene_io.hpp"
 
 using namespace cairn;
 using namespace cairn::test;
@@ -190,4 +192,26 @@ TEST_CASE("every backend: the same scene twice gives identical samples", "[engin
                     first[i].contacts == second[i].contacts;
     }
     CHECK(identical);
+}
+
+TEST_CASE("reference engines: the drum column overturns at a/g = B/H plus the ramp's lag", "[engines][structures]") {
+    // MuJoCo is left out: its soft contacts hold the column at the base edge with a penetration
+    // of their own; see docs/validation.md for its measured value
+    for (const std::string engine : engine_names()) {
+        if (engine == "mujoco") continue;
+        CAPTURE(engine);
+        const Scene s = load_scene(std::string(CAIRN_SOURCE_DIR) + "/scenarios/structures/column_pushover.toml", {});
+        std::vector<Sample> samples;
+        long long k = 0;
+        const long long every = std::llround(s.run.output_interval / 1e-4);
+        run(engine, s, "rigid", s.run.duration, [&](const Sample& x) {
+            if (k++ % every == 0) samples.push_back(x);
+        });
+        const auto r = cases::analyse_case(s, samples, {false});
+        REQUIRE(!r.metrics.empty());
+        // measured 0.27057 (Bullet) and 0.27065 (ODE) against the rigid monolith's 0.27076:
+        // rigid contact is the limit analysis' own model, so 2 % holds with room
+        INFO(r.metrics[0].name << ": " << r.metrics[0].value << " against " << r.metrics[0].reference);
+        CHECK(r.metrics[0].pass());
+    }
 }
