@@ -17,14 +17,15 @@ void RigidBody::set_omega(const Vec3& w) {
 double RigidBody::kinetic_energy() const { return 0.5 * mass * v.squaredNorm() + 0.5 * omega().dot(L); }
 
 double kick(RigidBody& b, const Vec3& force, const Vec3& torque, double h, double alpha) {
-    // implicit damping: p_new = (p_old + h·F) / (1 + α·h), dissipation α·h·(average velocity)·p
+    // implicit damping: p_new = (p_old + h·F) / (1 + α·h). The kinetic energy changes by
+    // (p_new − p_old)·v_avg = h·F·v_avg − α·h·p_new·v_avg: the damping takes α·h·p_new·v_avg
     const double damp = 1.0 / (1.0 + alpha * h);
-    Vec3 v_old = b.v, w_old = b.omega(), L_old = b.L;
+    Vec3 v_old = b.v, w_old = b.omega();
     b.v = (b.v + h * force / b.mass) * damp;
     b.L = (b.L + h * torque) * damp;
     if (alpha == 0.0) return 0.0;
-    Vec3 v_avg = 0.5 * (v_old + b.v), w_avg = 0.5 * (w_old + b.omega()), L_avg = 0.5 * (L_old + b.L);
-    return alpha * h * (b.mass * v_avg.squaredNorm() + w_avg.dot(L_avg));
+    Vec3 v_avg = 0.5 * (v_old + b.v), w_avg = 0.5 * (w_old + b.omega());
+    return alpha * h * (b.mass * b.v.dot(v_avg) + b.L.dot(w_avg));
 }
 
 Vec3 rotation_vector(const Quat& q) {

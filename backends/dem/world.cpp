@@ -109,12 +109,8 @@ void World::kick(double h) {
             energy_.dissipated += dem::kick(b.body, force_[i], torque_[i], h, alpha);
             continue;
         }
-        const auto& m = b.deformable->lumped_mass();
-        for (size_t n = 0; n < b.v.size(); ++n) {
-            Vec3 v_old = b.v[n];
-            b.v[n] = (b.v[n] + h * accel_[i][n]) * damp;
-            if (alpha > 0.0) energy_.dissipated += alpha * h * m[n] * (0.5 * (v_old + b.v[n])).squaredNorm();
-        }
+        for (size_t n = 0; n < b.v.size(); ++n) b.v[n] = (b.v[n] + h * accel_[i][n]) * damp;
+        if (alpha > 0.0) energy_.dissipated += mass_damping_loss(*b.deformable, b.x, b.v, accel_[i], h, alpha);
     }
 }
 
@@ -169,7 +165,7 @@ void World::compute_forces() {
             if (b.deformable->inverted_element() >= 0 && inversion_.empty()) inversion_ = inversion_message(i);
             energy_.dissipated += b.deformable->damping_power() * dt_;
             element_updates_ += (long long)b.deformable->element_count();
-            b.deformable->accelerations(b.x, b.f, accel_[i]);
+            b.deformable->accelerations(b.x, b.v, b.f, accel_[i]);
             continue;
         }
         force_[i] = b.body.mass * scene_.gravity;

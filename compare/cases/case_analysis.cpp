@@ -1,6 +1,7 @@
 #include "cases/case_analysis.hpp"
 
 #include "cases/kinds.hpp"
+#include "cases/structure_kinds.hpp"
 #include "error.hpp"
 
 namespace cairn::cases {
@@ -13,6 +14,8 @@ CaseAnalysis analyse_case(const Scene& scene, const std::vector<Sample>& samples
     if (k == "slide" || k == "stick") return analyse_friction(scene, samples, contact);
     if (k == "housner") return analyse_rocking(scene, samples, contact);
     if (k == "rolling") return analyse_rolling(scene, samples, contact);
+    if (k == "pushover") return analyse_pushover(scene, samples, contact);
+    if (k == "arch") return analyse_arch(scene, samples, contact);
     throw Error(scene.source + ": reference kind '" + k + "' has no validation metrics");
 }
 

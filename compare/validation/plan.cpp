@@ -22,7 +22,8 @@ const std::vector<std::string>& paper_cases() {
 std::vector<Variant> variants_for(const Scene& scene, const std::vector<std::string>& backends) {
     const std::string kind = scene.reference ? scene.reference->kind : "";
     const bool damped = scene.contact.damping_rule != ContactDampingRule::none;
-    const bool rigid_ref = kind == "slide" || kind == "stick" || kind == "rolling" || (kind == "housner" && !damped);
+    const bool rigid_ref = kind == "slide" || kind == "stick" || kind == "rolling" || (kind == "housner" && !damped) ||
+                           kind == "pushover" || kind == "arch";
     const bool penalty_ref = kind == "rest" || kind == "impact" || kind == "housner";
     std::vector<Variant> out;
     for (const auto& b : backends) {

@@ -7,7 +7,7 @@
 #include <limits>
 
 #include "error.hpp"
-#include "geometry/hexahedron.hpp"
+#include "run/energy_scale.hpp"
 #include "run/stop.hpp"
 
 namespace cairn {
@@ -16,29 +16,10 @@ namespace {
 
 /// energy growth beyond this fraction of the scale has no source: the run is unstable
 constexpr double kGrowthBound = 1.0;
-/// a balance error beyond this fraction of the scale is flagged as drift (the run goes on)
+/// a balance error beyond this fraction of the motion's energy is flagged as drift (the run goes on)
 constexpr double kDriftBound = 0.01;
-/// the energy scale never falls below this, J (keeps the bounds meaningful for a scene at rest)
-constexpr double kMinScale = 1.0;
 /// wall time between progress calls, s
 constexpr double kProgressEvery = 0.5;
-
-/// Σ over free blocks of m·g·(block diameter): the energy a block can trade with gravity, J
-double potential_scale(const Scene& scene) {
-    const double g = scene.gravity.norm();
-    double sum = 0.0;
-    for (const auto& b : scene.blocks) {
-        if (b.fixed) continue;
-        const double density = (b.material >= 0 && b.material < int(scene.materials.size()))
-                                   ? scene.materials[b.material].density
-                                   : 0.0;
-        double diameter = 0.0;
-        for (const auto& p : b.corners)
-            for (const auto& q : b.corners) diameter = std::max(diameter, (p - q).norm());
-        sum += mass_properties(b.corners, density).mass * g * diameter;
-    }
-    return sum;
-}
 
 bool finite(const Vec3& v) { return v.allFinite(); }
 
@@ -87,29 +68,20 @@ RunResult run_scene(Backend& backend, const Scene& scene, const RunOptions& opti
     r.output_every = int(std::min<long long>(size.output_every, std::numeric_limits<int>::max()));
     const long long total_steps = size.steps;
 
-    const double gravity_scale = potential_scale(scene);
-    double motion_scale = 0.0;   // max over earlier samples of |kinetic| + |contact| + |strain|, J
+    EnergyScale energy_scale(scene);
 
     // check one sample; returns the reason if the run must stop
     auto check = [&](const Sample& s) -> std::string {
         if (auto bad = non_finite(s, scene); !bad.empty()) return bad;
         const Energies& e = s.energy;
-        const double motion = std::abs(e.kinetic) + std::abs(e.contact) + std::abs(e.strain);
-        if (r.sample_count == 0) {
-            r.initial_total = e.total();
-            motion_scale = motion;
-        }
-        // the motion part of the scale comes from the samples before this one: energy that grows
-        // without a source must not raise the bar it is measured against
-        const double scale =
-            std::max(kMinScale, motion_scale + std::abs(e.external) + gravity_scale);
-        motion_scale = std::max(motion_scale, motion);
+        if (r.sample_count == 0) r.initial_total = e.total();
+        const EnergyBounds scale = energy_scale.add(e);
         const double err = e.total() - r.initial_total;
-        r.max_balance_error = std::max(r.max_balance_error, std::abs(err) / scale);
-        if (std::abs(err) > kDriftBound * scale) r.energy_drift = true;
-        if (err > kGrowthBound * scale)
+        r.max_balance_error = std::max(r.max_balance_error, std::abs(err) / scale.motion);
+        if (std::abs(err) > kDriftBound * scale.motion) r.energy_drift = true;
+        if (err > kGrowthBound * scale.growth)
             return "energy growing without a source (balance error " + format_g("%.3g", err) +
-                   " J against an energy scale of " + format_g("%.3g", scale) + " J)";
+                   " J against an energy scale of " + format_g("%.3g", scale.growth) + " J)";
         return {};
     };
 

@@ -224,7 +224,8 @@ void DeformableBody::rotation_inertias(const std::vector<Vec3>& x, Vec3& centre,
     target = rot * target_inertia_ * rot.transpose();
 }
 
-void DeformableBody::accelerations(const std::vector<Vec3>& x, const std::vector<Vec3>& f, std::vector<Vec3>& a) {
+void DeformableBody::accelerations(const std::vector<Vec3>& x, const std::vector<Vec3>& v,
+                                   const std::vector<Vec3>& f, std::vector<Vec3>& a) {
     const size_t nn = x.size();
     if (scheme_ == MassScheme::consistent) {
         for (size_t n = 0; n < nn; ++n)
@@ -248,34 +249,54 @@ void DeformableBody::accelerations(const std::vector<Vec3>& x, const std::vector
     }
     for (size_t n = 0; n < nn; ++n) a[n] = fixed_[n] ? Vec3::Zero() : Vec3(f[n] / lumped_[n]);
     if (!rotation_correction_) return;
-    // rigid rotations get the target inertia T instead of the lumped G: a += (T⁻¹ − G⁻¹)τ × r
+    // the lumped nodes alone turn as a body of inertia G: ω̇ = G⁻¹(τ − ω×Gω). The rigid rotation
+    // must follow Euler's equation with the target inertia T, ω̇ = T⁻¹(τ − ω×Tω): add the
+    // difference as a rigid angular acceleration, a += δ × r, with ω = G⁻¹L of the lumped nodes
+    // (exact for a rigid motion). Without the gyroscopic terms this is the (T⁻¹ − G⁻¹)τ of the
+    // mass matrix alone; they cancel only where T is proportional to G.
     Vec3 c;
     Mat3 g, t;
     rotation_inertias(x, c, g, t);
-    Vec3 torque = Vec3::Zero();
-    for (size_t n = 0; n < nn; ++n) torque += (x[n] - c).cross(f[n]);
-    Vec3 delta = t.ldlt().solve(torque) - g.ldlt().solve(torque);
+    Vec3 torque = Vec3::Zero(), momentum = Vec3::Zero();
+    for (size_t n = 0; n < nn; ++n) {
+        torque += (x[n] - c).cross(f[n]);
+        momentum += lumped_[n] * (x[n] - c).cross(v[n]);
+    }
+    const auto g_ldlt = g.ldlt();
+    const Vec3 w = g_ldlt.solve(momentum);
+    const Vec3 delta = t.ldlt().solve(torque - w.cross(t * w)) - g_ldlt.solve(torque - w.cross(g * w));
     for (size_t n = 0; n < nn; ++n) a[n] += delta.cross(x[n] - c);
 }
 
 double DeformableBody::kinetic_energy(const std::vector<Vec3>& x, const std::vector<Vec3>& v) const {
-    double e = 0.0;
+    return 0.5 * mass_product(x, v, v);
+}
+
+double DeformableBody::mass_product(const std::vector<Vec3>& x, const std::vector<Vec3>& u,
+                                    const std::vector<Vec3>& w) const {
     if (scheme_ == MassScheme::consistent) {
-        for (size_t n = 0; n < v.size(); ++n)
-            if (free_index_[n] >= 0) work_rhs_.row(free_index_[n]) = v[n].transpose();
+        for (size_t n = 0; n < w.size(); ++n)
+            if (free_index_[n] >= 0) work_rhs_.row(free_index_[n]) = w[n].transpose();
         work_sol_.noalias() = consistent_matrix_ * work_rhs_;
-        return 0.5 * (work_rhs_.array() * work_sol_.array()).sum();
+        double e = 0.0;
+        for (size_t n = 0; n < u.size(); ++n)
+            if (free_index_[n] >= 0) e += u[n].dot(Vec3(work_sol_.row(free_index_[n]).transpose()));
+        return e;
     }
-    for (size_t n = 0; n < v.size(); ++n) e += 0.5 * lumped_[n] * v[n].squaredNorm();
+    double e = 0.0;
+    for (size_t n = 0; n < u.size(); ++n) e += lumped_[n] * u[n].dot(w[n]);
     if (!rotation_correction_) return e;
-    // + ½ Lᵀ C L with C = G⁻¹ (T − G) G⁻¹ on the lumped angular momentum L
+    // + L(u)ᵀ C L(w) with C = G⁻¹ (T − G) G⁻¹ on the lumped angular momenta L
     Vec3 c;
     Mat3 g, t;
     rotation_inertias(x, c, g, t);
-    Vec3 l = Vec3::Zero();
-    for (size_t n = 0; n < x.size(); ++n) l += lumped_[n] * (x[n] - c).cross(v[n]);
-    Vec3 gl = g.ldlt().solve(l);
-    return e + 0.5 * gl.dot((t - g) * gl);
+    Vec3 lu = Vec3::Zero(), lw = Vec3::Zero();
+    for (size_t n = 0; n < x.size(); ++n) {
+        lu += lumped_[n] * (x[n] - c).cross(u[n]);
+        lw += lumped_[n] * (x[n] - c).cross(w[n]);
+    }
+    const auto g_ldlt = g.ldlt();
+    return e + g_ldlt.solve(lu).dot((t - g) * g_ldlt.solve(lw));
 }
 
 void DeformableBody::pose(const std::vector<Vec3>& x, Vec3& centre, Mat3& rotation) const {
@@ -317,6 +338,11 @@ Mat3 DeformableBody::inertia() const {
     Mat3 i = Mat3::Zero();
     for (size_t n = 0; n < ref_.size(); ++n) i += point_inertia(ref_[n] - ref_centre_, lumped_[n]);
     return i;
+}
+
+double mass_damping_loss(const DeformableBody& body, const std::vector<Vec3>& x, const std::vector<Vec3>& v_new,
+                         const std::vector<Vec3>& a, double h, double alpha) {
+    return alpha * h * ((1.0 + 0.5 * alpha * h) * body.mass_product(x, v_new, v_new) - 0.5 * h * body.mass_product(x, v_new, a));
 }
 
 }  // namespace cairn::dem

@@ -22,10 +22,15 @@ public:
     /// subtract internal (and β-damping) forces from f for positions x and velocities v;
     /// returns the strain energy (J) and sets damping_power() (W)
     double add_internal_forces(const std::vector<Vec3>& x, const std::vector<Vec3>& v, std::vector<Vec3>& f);
-    /// nodal accelerations a = M⁻¹ f (fixed nodes get zero)
-    void accelerations(const std::vector<Vec3>& x, const std::vector<Vec3>& f, std::vector<Vec3>& a);
+    /// nodal accelerations (m/s²) under the nodal forces f (N) at positions x (m) and velocities
+    /// v (m/s): a = M⁻¹ f, plus for `barycentre`/`corrected` the gyroscopic term of their
+    /// configuration-dependent mass (fixed nodes get zero)
+    void accelerations(const std::vector<Vec3>& x, const std::vector<Vec3>& v, const std::vector<Vec3>& f,
+                       std::vector<Vec3>& a);
     /// kinetic energy ½ vᵀ M v, J
     double kinetic_energy(const std::vector<Vec3>& x, const std::vector<Vec3>& v) const;
+    /// uᵀ M w with this scheme's mass at positions x (m); u, w nodal vectors (velocities: J·s²/m²·…)
+    double mass_product(const std::vector<Vec3>& x, const std::vector<Vec3>& u, const std::vector<Vec3>& w) const;
     /// best-fit rigid pose: centre of mass (m) and rotation block frame → world (polar decomposition)
     void pose(const std::vector<Vec3>& x, Vec3& centre, Mat3& rotation) const;
     /// centre-of-mass velocity (m/s) and angular velocity (rad/s) of the nodes
@@ -87,5 +92,11 @@ private:
     bool rotation_correction_ = false;
     Mat3 target_inertia_ = Mat3::Zero();
 };
+
+/// energy (J) taken by the mass damping αM of one implicit half kick v_new = (v_old + h·a)/(1 + α·h),
+/// with the block's own M: exactly α·h·v_newᵀ M v_avg, v_avg = (v_old + v_new)/2 =
+/// (1 + α·h/2)·v_new − (h/2)·a (h in s, α in 1/s, v_new in m/s, a in m/s²)
+double mass_damping_loss(const DeformableBody& body, const std::vector<Vec3>& x, const std::vector<Vec3>& v_new,
+                         const std::vector<Vec3>& a, double h, double alpha);
 
 }  // namespace cairn::dem

@@ -127,6 +127,7 @@ TEST_CASE("slow drift is flagged but the run completes", "[runner]") {
     FakeBackend backend(f);
     const RunResult r = run_scene(backend, scene, {});
     CHECK(r.status == RunStatus::completed);
+    INFO("max balance error " << r.max_balance_error);
     CHECK(r.energy_drift);
     CHECK(r.max_balance_error > 0.01);
     CHECK(r.max_balance_error < 0.05);

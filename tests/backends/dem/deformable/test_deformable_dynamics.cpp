@@ -34,7 +34,7 @@ double bar_period(MassScheme scheme, int n) {
     auto accel = [&] {
         std::fill(f.begin(), f.end(), Vec3::Zero());
         body.add_internal_forces(x, v, f);
-        body.accelerations(x, f, a);
+        body.accelerations(x, v, f, a);
     };
     const int tip = mesh.node(n, 0, 0);
     accel();

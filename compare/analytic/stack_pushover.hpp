@@ -1,0 +1,45 @@
+#pragma once
+/// A stack of rectangular layers (the drums of a column, the courses of a wall) on a fixed base,
+/// pushed by a uniform lateral acceleration λ·g: the multiplier λ at which it overturns.
+/// Layers are centred on one vertical axis; each bed joint is as wide as the narrower of the two
+/// layers it joins (the first joins the base, taken wider than the first layer).
+
+#include <functional>
+#include <vector>
+
+namespace cairn::oracle {
+
+/// one layer of the stack, bottom first
+struct StackLayer {
+    double height;   ///< m
+    double width;    ///< along the push, m
+    double depth;    ///< across the push, m (the bed joint's length)
+    double mass;     ///< kg
+};
+
+/// the stack and its overturning multipliers
+struct BlockStack {
+    std::vector<StackLayer> layers;   ///< bottom to top
+    double g = 9.81;                  ///< m/s²
+
+    /// rigid blocks: the least λ over the mechanisms "all the layers above bed joint j turn as one
+    /// body about the joint's leading edge": min over j of (joint half-width)/(height of their
+    /// centre of mass above the joint). A column of equal drums: B/H.
+    double rigid_multiplier() const;
+    /// joints of no-tension Winkler springs kn (N/m³, the penalty contact integrated over the
+    /// joint): each joint opens gradually (its moment tends to N·B/2 only as its rotation grows)
+    /// while the layers above lean over it, so the quasi-static path of λ against rotation has a
+    /// peak below the rigid value; returns that peak, found by continuation in the base joint's
+    /// rotation with the other joints in equilibrium (small rotations). → rigid_multiplier() as
+    /// kn → ∞.
+    double winkler_multiplier(double kn) const;
+    /// the rotation of the top layer (rad) at that peak
+    double winkler_peak_rotation(double kn) const;
+    /// a monolithic rigid stack (rocking about the base joint's edge, exact nonlinear equation of
+    /// motion, RK4 at 1e-4 s) at rest from t = 0 under a lateral acceleration λ(t)·g: the time (s)
+    /// at which its rotation reaches `rotation` (rad), or NaN if not within `until` (s). Against a
+    /// slow ramp this is the quasi-static multiplier plus the ramp's dynamic lag.
+    double rigid_ramp_time(const std::function<double(double)>& lambda, double rotation, double until) const;
+};
+
+}  // namespace cairn::oracle

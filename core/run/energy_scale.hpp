@@ -1,0 +1,38 @@
+#pragma once
+/// The energy a run's balance error is judged against, kept as running summaries of the samples
+/// (updated once per sample, in order; nothing stored per sample).
+
+#include "backend/backend.hpp"
+#include "scene/scene.hpp"
+
+namespace cairn {
+
+/// The scales one sample is judged against, J.
+struct EnergyBounds {
+    /// the energy of the motion: the largest kinetic + contact + strain of the earlier samples,
+    /// plus |work of the loads| now, plus the potential energy actually exchanged (max − min of
+    /// the potential over the run up to this sample), at least 1 J. The drift flag's scale.
+    double motion = 0.0;
+    /// `motion` plus Σ m·g·(diameter) of the free blocks (all the energy gravity could still
+    /// release): the bar for energy growing without a source, which stops a run
+    double growth = 0.0;
+};
+
+/// Running summaries of a run's energies.
+class EnergyScale {
+public:
+    /// the scene gives the gravity reach of its free blocks
+    explicit EnergyScale(const Scene& scene);
+    /// take the next sample's energies and return the scales it is judged against; the motion
+    /// part comes from the samples before it: energy that grows without a source must not raise
+    /// the bar it is measured against
+    EnergyBounds add(const Energies& e);
+
+private:
+    double gravity_reach_ = 0.0;    // J
+    double motion_max_ = 0.0;       // largest |kinetic| + |contact| + |strain| so far, J
+    double potential_min_ = 0.0, potential_max_ = 0.0;   // J
+    bool first_ = true;
+};
+
+}  // namespace cairn

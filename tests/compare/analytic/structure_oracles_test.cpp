@@ -1,0 +1,79 @@
+// the structure oracles: an arch's minimum thickness, a stack's overturning multipliers
+#include <catch2/catch.hpp>
+
+#include <cmath>
+
+#include "analytic/arch_thrust.hpp"
+#include "analytic/stack_pushover.hpp"
+
+using namespace cairn::oracle;
+
+TEST_CASE("the minimum thickness of a semicircular arch tends to Milankovitch's 0.1075 as joints multiply", "[oracle][arch]") {
+    // the published value has 4 digits: half a unit of the last is 0.05 %; N = 201 is within
+    // 3e-5 of the limit (the N = 101 → 201 change is 1.3e-5)
+    CHECK(SemicircularArch{201}.minimum_thickness() == Approx(kMilankovitchMinimum).epsilon(5e-4));
+    // fewer joints constrain the thrust line less: odd N (a keystone at the crown) approach from
+    // below (measured 0.0966, 0.1021, 0.1063, 0.1070, 0.1072 for N = 5, 9, 15, 25, 31)
+    double prev = 0.0;
+    for (int n : {5, 9, 15, 25, 31, 51, 101}) {
+        const double t = SemicircularArch{n}.minimum_thickness();
+        INFO("N = " << n << ": t/R = " << t);
+        CHECK(t > prev);
+        CHECK(t < kMilankovitchMinimum);
+        prev = t;
+    }
+    // the 25-voussoir arch of scenarios/structures: 0.10703
+    CHECK(SemicircularArch{25}.minimum_thickness() == Approx(0.10703).margin(1e-5));
+}
+
+TEST_CASE("a thrust line fits above the minimum thickness and not below it", "[oracle][arch]") {
+    const SemicircularArch arch{25};
+    const double t = arch.minimum_thickness();
+    CHECK(arch.thrust_line_fits(1.001 * t));
+    CHECK_FALSE(arch.thrust_line_fits(0.999 * t));
+    CHECK(arch.thrust_line_fits(0.22));   // the 9-voussoir arch's t/R of the shipped arch scene
+    // three voussoirs have only four joints: no symmetric 5-hinge mechanism, any thickness stands
+    CHECK(SemicircularArch{3}.thrust_line_fits(0.01));
+}
+
+TEST_CASE("a stack overturns about its base at B/H, above which sub-stacks need more", "[oracle][pushover]") {
+    const double m = 0.4 * 0.4 * 0.5 * 2600.0;
+    const BlockStack column{{{0.5, 0.4, 0.4, m}, {0.5, 0.4, 0.4, m}, {0.5, 0.4, 0.4, m}}, 9.81};
+    CHECK(column.rigid_multiplier() == Approx(0.4 / 1.5).epsilon(1e-12));
+    // the top drum alone needs B/h = 0.8, the top two 0.4: a short base mechanism would win
+    const BlockStack narrow_top{{{0.5, 0.4, 0.4, m}, {0.5, 0.4, 0.4, m}, {0.5, 0.1, 0.4, m / 4}}, 9.81};
+    CHECK(narrow_top.rigid_multiplier() == Approx(std::min(0.1 / 0.5, 0.2 / 0.55)).epsilon(1e-12));
+    // Winkler joints: the peak falls below B/H by ~ kn^(-1/3) and tends to it as kn grows
+    // (measured 0.2321 at 1e9, 0.2507 at 1e10, 0.2592 at 1e11)
+    double prev = 0.0;
+    for (double kn : {1e9, 1e10, 1e11, 1e13}) {
+        const double w = column.winkler_multiplier(kn);
+        INFO("kn = " << kn << ": " << w);
+        CHECK(w > prev);
+        CHECK(w < column.rigid_multiplier());
+        prev = w;
+    }
+    CHECK(column.winkler_multiplier(1e13) == Approx(column.rigid_multiplier()).epsilon(0.01));
+    // one joint: the closed form of the peak of N(B/2 − a/3) − N h θ, a = √(2N/(kn D θ)):
+    // θ* = (√(2N/(kn D))/(6h))^(2/3)
+    const BlockStack mono{{{1.5, 0.4, 0.4, 3 * m}}, 9.81};
+    const double n = 3 * m * 9.81, h = 0.75, k = std::sqrt(2 * n / (1e9 * 0.4));
+    const double th = std::pow(k / (6 * h), 2.0 / 3.0);
+    CHECK(mono.winkler_multiplier(1e9) == Approx((0.2 - k / (3 * std::sqrt(th)) - h * th) / h).epsilon(1e-4));
+}
+
+TEST_CASE("a rigid stack under a ramp tips when λ passes B/H plus the ramp's lag", "[oracle][pushover]") {
+    const double m = 0.4 * 0.4 * 0.5 * 2600.0;
+    const BlockStack column{{{0.5, 0.4, 0.4, m}, {0.5, 0.4, 0.4, m}, {0.5, 0.4, 0.4, m}}, 9.81};
+    auto ramp = [](double rate) { return [rate](double t) { return t < 2 ? 0.1 * t : 0.2 + rate * (t - 2); }; };
+    double prev_lag = INFINITY;
+    for (double rate : {1e-2, 5e-3, 2.5e-3, 1e-3}) {
+        const double t = column.rigid_ramp_time(ramp(rate), 0.05, 500.0);
+        const double lag = ramp(rate)(t) - column.rigid_multiplier();
+        INFO("rate " << rate << ": lag " << lag);
+        CHECK(lag > 0.0);         // nothing tips before λ reaches B/H
+        CHECK(lag < prev_lag);    // slower ramps come closer (measured +1.5 % at 2.5e-3 g/s)
+        prev_lag = lag;
+    }
+    CHECK(std::isnan(column.rigid_ramp_time([](double) { return 0.25; }, 0.05, 10.0)));   // below B/H: never
+}

@@ -1,0 +1,55 @@
+// EnergyScale: the drift flag's scale is the energy of the motion, not gravity's reach
+#include <catch2/catch.hpp>
+
+#include "geometry/hexahedron.hpp"
+#include "run/energy_scale.hpp"
+#include "scene/scene_builder.hpp"
+
+using namespace cairn;
+
+namespace {
+
+Energies energies(double kinetic, double potential, double contact = 0.0, double external = 0.0) {
+    Energies e;
+    e.kinetic = kinetic;
+    e.potential = potential;
+    e.contact = contact;
+    e.external = external;
+    return e;
+}
+
+// one free 1 m cube of 2600 kg/m³ under g = 9.81 m/s²: gravity's reach m·g·√3 = 44178 J
+Scene cube_scene() {
+    Scene s;
+    s.materials.push_back({"stone", 2600.0, 30e9, 0.2});
+    add_box(s, "A", Vec3(1, 1, 1), Vec3(0, 0, 0.5), false);
+    add_box(s, "B", Vec3(1, 1, 1), Vec3(0, 0, -0.5), true);   // fixed: no reach
+    return s;
+}
+
+}  // namespace
+
+TEST_CASE("the motion scale holds the kinetic energy and the potential actually exchanged", "[runner][energy]") {
+    EnergyScale scale(cube_scene());
+    const double reach = 2600.0 * 9.81 * std::sqrt(3.0);
+    // a block released at rest rocks: potential 1000 J → 700 J while kinetic 0 → 300 J
+    auto b0 = scale.add(energies(0.0, 1000.0));
+    CHECK(b0.motion == 1.0);                          // nothing moved yet: the 1 J floor
+    CHECK(b0.growth == Approx(1.0 + reach));
+    auto b1 = scale.add(energies(150.0, 850.0));
+    CHECK(b1.motion == Approx(150.0));                // earlier kinetic 0, potential exchanged 150 J
+    auto b2 = scale.add(energies(300.0, 700.0, 5.0));
+    CHECK(b2.motion == Approx(150.0 + 300.0));        // kinetic of b1, 300 J exchanged so far
+    auto b3 = scale.add(energies(0.0, 1000.0));
+    CHECK(b3.motion == Approx(305.0 + 300.0));        // largest kinetic + contact so far (b2)
+    CHECK(b3.growth == Approx(605.0 + reach));
+    // |work of the loads| counts now, whatever its sign
+    CHECK(scale.add(energies(0.0, 1000.0, 0.0, -40.0)).motion == Approx(645.0));
+}
+
+TEST_CASE("energy appearing at a sample does not raise that sample's own scale", "[runner][energy]") {
+    EnergyScale scale(cube_scene());
+    scale.add(energies(10.0, 0.0));
+    CHECK(scale.add(energies(1e6, 0.0)).motion == Approx(10.0));
+    CHECK(scale.add(energies(0.0, 0.0)).motion == Approx(1e6));
+}
