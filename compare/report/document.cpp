@@ -1,5 +1,6 @@
 #include "report/document.hpp"
 
+#include <map>
 #include <sstream>
 
 namespace cairn::report {
@@ -36,6 +37,22 @@ void Document::image(std::string path, std::string caption) {
     blocks.push_back(std::move(b));
 }
 
+void Document::contents() {
+    Block b;
+    b.kind = Block::Kind::contents;
+    blocks.push_back(std::move(b));
+}
+
+std::string heading_anchor(const std::string& text) {
+    std::string o;
+    for (unsigned char c : text) {
+        if (c >= 'A' && c <= 'Z') o += char(c - 'A' + 'a');
+        else if ((c >= 'a' && c <= 'z') || (c >= '0' && c <= '9') || c == '-' || c == '_' || c >= 0x80) o += char(c);
+        else if (c == ' ') o += '-';
+    }
+    return o;
+}
+
 void append(Document& into, const Document& from, const std::string& image_prefix) {
     for (Block b : from.blocks) {
         if (b.kind == Block::Kind::image) b.image = image_prefix + b.image;
@@ -44,6 +61,20 @@ void append(Document& into, const Document& from, const std::string& image_prefi
 }
 
 namespace {
+
+/// the anchor of every heading block (empty for other blocks), repeated anchors numbered "-1",
+/// "-2" as GitHub does
+std::vector<std::string> anchors(const Document& d) {
+    std::vector<std::string> out(d.blocks.size());
+    std::map<std::string, int> seen;
+    for (size_t i = 0; i < d.blocks.size(); ++i) {
+        if (d.blocks[i].kind != Block::Kind::heading) continue;
+        std::string a = heading_anchor(d.blocks[i].text);
+        const int n = seen[a]++;
+        out[i] = n ? a + "-" + std::to_string(n) : a;
+    }
+    return out;
+}
 
 std::string md_cell(const std::string& s) {
     std::string o;
@@ -77,8 +108,16 @@ const char* cell_class(const std::string& s) {
 std::string to_markdown(const Document& d) {
     std::ostringstream o;
     o << "# " << d.title << "\n\n";
+    const auto anchor = anchors(d);
     for (const auto& b : d.blocks) {
         switch (b.kind) {
+            case Block::Kind::contents:
+                for (size_t i = 0; i < d.blocks.size(); ++i)
+                    if (d.blocks[i].kind == Block::Kind::heading && d.blocks[i].level <= 3)
+                        o << std::string(size_t(2 * (d.blocks[i].level - 2)), ' ') << "- [" << d.blocks[i].text
+                          << "](#" << anchor[i] << ")\n";
+                o << "\n";
+                break;
             case Block::Kind::heading: o << std::string(size_t(b.level), '#') << " " << b.text << "\n\n"; break;
             case Block::Kind::paragraph: o << b.text << "\n\n"; break;
             case Block::Kind::bullets:
@@ -113,12 +152,23 @@ std::string to_html(const Document& d) {
          "td,th{border:1px solid #bbb;padding:3px 7px;text-align:left;vertical-align:top}\n"
          "th{background:#eee}td.pass{background:#d8f0d8}td.miss{background:#f6d0d0;font-weight:bold}\n"
          "td.na{background:#eee;color:#666}img{max-width:100%;border:1px solid #ccc}\n"
-         "figcaption{font-style:italic;margin-bottom:1.5em}\n</style></head><body>\n";
+         "figcaption{font-style:italic;margin-bottom:1.5em}\nul.toc{list-style:none;padding-left:0}li.toc3{padding-left:1.5em}\n</style></head><body>\n";
     o << "<h1>" << esc(d.title) << "</h1>\n";
-    for (const auto& b : d.blocks) {
+    const auto anchor = anchors(d);
+    for (size_t k = 0; k < d.blocks.size(); ++k) {
+        const Block& b = d.blocks[k];
         switch (b.kind) {
+            case Block::Kind::contents: {
+                o << "<nav><ul class=\"toc\">\n";
+                for (size_t i = 0; i < d.blocks.size(); ++i)
+                    if (d.blocks[i].kind == Block::Kind::heading && d.blocks[i].level <= 3)
+                        o << "<li class=\"toc" << d.blocks[i].level << "\"><a href=\"#" << esc(anchor[i]) << "\">"
+                          << esc(d.blocks[i].text) << "</a></li>\n";
+                o << "</ul></nav>\n";
+                break;
+            }
             case Block::Kind::heading:
-                o << "<h" << b.level << ">" << esc(b.text) << "</h" << b.level << ">\n";
+                o << "<h" << b.level << " id=\"" << esc(anchor[k]) << "\">" << esc(b.text) << "</h" << b.level << ">\n";
                 break;
             case Block::Kind::paragraph: o << "<p>" << esc(b.text) << "</p>\n"; break;
             case Block::Kind::bullets:

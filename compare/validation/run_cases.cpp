@@ -80,7 +80,7 @@ void execute(CaseRun& run, const fs::path& dir, const Scene& case_scene, const s
         run.message = std::string("cannot write outputs: ") + e.what();
     }
     try {
-        if (run.samples.size() >= 3) {
+        if (run.samples.size() >= 3 && scene.reference) {   // a scene without a reference has nothing to judge
             run.analysis = cases::analyse_case(scene, run.samples, {run.variant.penalty()});
             run.analysed = true;
         }

@@ -1,0 +1,45 @@
+#include "progress_line.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+namespace cairn {
+
+std::string progress_text(const std::string& label, double fraction, double duration, double dt, double elapsed) {
+    char buf[160];
+    const double sim = fraction * duration;
+    const double rate = dt > 0.0 && elapsed > 0.0 ? sim / dt / elapsed : 0.0;
+    const double left = fraction > 0.0 ? elapsed * (1.0 - fraction) / fraction : 0.0;
+    std::snprintf(buf, sizeof buf, ": t = %.3g / %.3g s (%3.0f %%), %.3g steps/s, %.0f s left", sim, duration,
+                  100.0 * fraction, rate, std::ceil(left));
+    return label + buf;
+}
+
+ProgressLine::ProgressLine(std::string label, double duration) : label_(std::move(label)), duration_(duration) {
+    start_ = std::chrono::steady_clock::now();
+}
+
+void ProgressLine::begin(const Scene&, const RunResult& run) {
+    dt_ = run.dt;
+    start_ = std::chrono::steady_clock::now();
+}
+
+ProgressFn ProgressLine::function() {
+    return [this](double f) {
+        const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
+        const std::string text = progress_text(label_, f, duration_, dt_, elapsed);
+        // pad over a longer previous line
+        std::fprintf(stderr, "\r%s%*s", text.c_str(), int(width_ > text.size() ? width_ - text.size() : 0), "");
+        std::fflush(stderr);
+        width_ = std::max(width_, text.size());
+    };
+}
+
+void ProgressLine::clear() const {
+    if (width_ == 0) return;
+    std::fprintf(stderr, "\r%*s\r", int(width_), "");
+    std::fflush(stderr);
+}
+
+}  // namespace cairn
