@@ -83,7 +83,7 @@ report::Document write_compare_report(const CaseResult& result, const CompareCon
                                       std::string& figure_note) {
     const Scene& scene = result.scene;
     report::Document d;
-    d.title = "Comparison of " + ctx.scene_label + " across engines";
+    d.title = "Comparison of " + result.name + " across engines";
     d.contents();
 
     const auto blocks = free_blocks(scene);
@@ -111,7 +111,7 @@ report::Document write_compare_report(const CaseResult& result, const CompareCon
                   blocks.size(), blocks.size() == 1 ? "" : "s", scene.blocks.size() - blocks.size(), scene.run.duration,
                   result.runs.size(), variants.size(), ctx.wall_seconds, ctx.jobs, ctx.jobs == 1 ? "" : "s");
     d.paragraph((scene.description.empty() ? "" : scene.description + ". ") + line);
-    d.paragraph("Command: " + ctx.command);
+    d.paragraph("Scene: " + ctx.scene_label + ". Command: " + ctx.command);
     report::Table runs{{"variant", "engine", "contact", "block model", "outcome", "steps", "time step (s)",
                         "wall time (s)", "note"},
                        {}};
