@@ -67,7 +67,7 @@ std::string gnuplot_label(const std::string& s) {
     std::string o;
     for (unsigned char c : s) {
         const bool keep = (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') ||
-                          std::string(" -_.,()[]/+=").find(char(c)) != std::string::npos;
+                          std::string(" -_.,:()[]/+=").find(char(c)) != std::string::npos;
         o += keep ? char(c) : '_';
     }
     return o;

@@ -32,7 +32,7 @@ std::string history_file(const std::string& variant, int free_block);
 std::string difference_file(const std::string& variant, int free_block);
 std::string energy_file(const std::string& variant);
 
-/// text safe inside a single-quoted gnuplot string: letters, digits, space and - _ . , ( ) [ ] / + =
+/// text safe inside a single-quoted gnuplot string: letters, digits, space and - _ . , : ( ) [ ] / + =
 /// kept, anything else becomes '_' (scene names are untrusted)
 std::string gnuplot_label(const std::string& s);
 
