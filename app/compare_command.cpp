@@ -15,6 +15,7 @@
 #include "error.hpp"
 #include "output/atomic_write.hpp"
 #include "output/staged_dir.hpp"
+#include "progress_line.hpp"
 #include "registry.hpp"
 #include "report/document.hpp"
 #include "run/stop.hpp"
@@ -97,7 +98,9 @@ int compare_command(const CompareOptions& options) {
     jobs = std::max(1, std::min<int>(jobs, int(c.runs.size())));
     plan.overrides = options.overrides;
     plan.jobs = jobs;
-    plan.quiet = options.quiet || !stderr_is_terminal();
+    // on a terminal one progress line for all runs instead of a line per run; nothing otherwise
+    plan.quiet = true;
+    const bool show = !options.quiet && stderr_is_terminal();
     plan.serial_backends = {"ode"};   // Debian's ODE keeps its collision data global (no mt_collisions)
     plan.cases.push_back(std::move(c));
 
@@ -117,6 +120,9 @@ int compare_command(const CompareOptions& options) {
     plan.out_dir = dir.string();
     plan.final_dir = out_dir;
 
+    PoolProgress progress("compare " + plan.cases.front().name, plan.cases.front().runs.size(),
+                          plan.cases.front().scene.run.duration);
+    if (show) plan.progress = [&progress](size_t run, double f) { progress.update(run, f); };
     const bool one_thread = jobs > 1;
     validation::run_plan(plan, [one_thread](const std::string& name) {
 #ifdef _OPENMP
@@ -127,6 +133,7 @@ int compare_command(const CompareOptions& options) {
 #endif
         return make_backend(name);
     });
+    progress.clear();
     if (stop_requested()) return interrupted_keeping("report", out_dir);
 
     scene_compare::CompareContext ctx;

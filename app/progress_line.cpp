@@ -42,4 +42,36 @@ void ProgressLine::clear() const {
     std::fflush(stderr);
 }
 
+PoolProgress::PoolProgress(std::string label, size_t runs, double duration)
+    : label_(std::move(label)), duration_(duration), done_(runs, 0.0), start_(std::chrono::steady_clock::now()) {}
+
+void PoolProgress::update(size_t run, double fraction) {
+    std::lock_guard<std::mutex> lock(mutex_);
+    if (run >= done_.size()) return;
+    done_[run] = std::max(done_[run], std::min(1.0, fraction));
+    double sum = 0.0;
+    size_t ended = 0;
+    for (double f : done_) {
+        sum += f;
+        ended += f >= 1.0;
+    }
+    const double f = sum / double(done_.size());
+    const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
+    char buf[200];
+    std::snprintf(buf, sizeof buf, ": %zu of %zu runs done, %.3g of %.3g s simulated (%3.0f %%), %.0f s left", ended,
+                  done_.size(), sum * duration_, double(done_.size()) * duration_, 100.0 * f,
+                  f > 0.0 ? std::ceil(elapsed * (1.0 - f) / f) : 0.0);
+    const std::string text = label_ + buf;
+    std::fprintf(stderr, "\r%s%*s", text.c_str(), int(width_ > text.size() ? width_ - text.size() : 0), "");
+    std::fflush(stderr);
+    width_ = std::max(width_, text.size());
+}
+
+void PoolProgress::clear() {
+    std::lock_guard<std::mutex> lock(mutex_);
+    if (width_ == 0) return;
+    std::fprintf(stderr, "\r%*s\r", int(width_), "");
+    std::fflush(stderr);
+}
+
 }  // namespace cairn

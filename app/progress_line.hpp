@@ -3,7 +3,9 @@
 /// rewritten in place on stderr.
 
 #include <chrono>
+#include <mutex>
 #include <string>
+#include <vector>
 
 #include "run/runner.hpp"
 
@@ -26,6 +28,26 @@ private:
     std::string label_;
     double duration_;
     double dt_ = 0.0;
+    std::chrono::steady_clock::time_point start_;
+    size_t width_ = 0;
+};
+
+/// The progress line of several runs of one scene on a pool of threads (cairn compare): runs
+/// done, simulated time summed over the runs, time left. Safe to call from the pool threads.
+class PoolProgress {
+public:
+    /// `runs` runs of `duration` simulated seconds each
+    PoolProgress(std::string label, size_t runs, double duration);
+    /// run `run` is `fraction` done (1 = ended); redraws the line
+    void update(size_t run, double fraction);
+    /// erase the line
+    void clear();
+
+private:
+    std::mutex mutex_;
+    std::string label_;
+    double duration_;
+    std::vector<double> done_;
     std::chrono::steady_clock::time_point start_;
     size_t width_ = 0;
 };
