@@ -73,12 +73,12 @@ std::string gnuplot_label(const std::string& s) {
     return o;
 }
 
-void write_data(const std::vector<VariantHistories>& variants, int base, const std::string& dir) {
+void write_data(const std::vector<VariantHistories>& variants, int base, int max_blocks, const std::string& dir) {
     fs::create_directories(fs::path(dir) / "data");
     for (size_t v = 0; v < variants.size(); ++v) {
         const std::string& name = variants[v].run->variant.name;
         write_text_atomic((fs::path(dir) / energy_file(name)).string(), energy_csv(variants[v].run->samples));
-        for (size_t b = 0; b < variants[v].blocks.size(); ++b) {
+        for (size_t b = 0; b < variants[v].blocks.size() && int(b) < max_blocks; ++b) {
             write_text_atomic((fs::path(dir) / history_file(name, int(b))).string(), history_csv(variants[v].blocks[b]));
             if (base >= 0 && int(v) != base && b < variants[size_t(base)].blocks.size())
                 write_text_atomic((fs::path(dir) / difference_file(name, int(b))).string(),

@@ -36,8 +36,9 @@ std::string energy_file(const std::string& variant);
 /// kept, anything else becomes '_' (scene names are untrusted)
 std::string gnuplot_label(const std::string& s);
 
-/// write every data file under DIR/data; `base` indexes the baseline in `variants` (-1 = none)
-void write_data(const std::vector<VariantHistories>& variants, int base, const std::string& dir);
+/// write the data files under DIR/data for the first `max_blocks` free blocks (the runs'
+/// trajectory.csv hold every block); `base` indexes the baseline in `variants` (-1 = none)
+void write_data(const std::vector<VariantHistories>& variants, int base, int max_blocks, const std::string& dir);
 
 /// draw DIR/figures/block<k>.png (histories), block<k>_diff.png (differences, when there is a
 /// baseline) for the first `max_blocks` free blocks and energy.png; returns the images written

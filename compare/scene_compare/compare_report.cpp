@@ -66,6 +66,18 @@ std::vector<std::string> contact_row(const CaseRun& r) {
             std::to_string(most), number_text(sum / double(r.samples.size()), 4)};
 }
 
+/// false for a capability row the scene does not use (a damping it does not set, hexahedra it does
+/// not have, deformable blocks the reference engines are never asked for); rows not named here apply
+bool applies(const std::string& feature, const Scene& scene, bool engine) {
+    if (feature == "mass-proportional damping") return scene.damping.alpha != 0.0;
+    if (feature == "stiffness-proportional damping") return scene.damping.beta != 0.0;
+    if (feature == "normal contact damping") return scene.contact.damping_rule != ContactDampingRule::none;
+    if (feature == "deformable blocks") return !engine;
+    if (feature == "general convex hexahedra")
+        return std::any_of(scene.blocks.begin(), scene.blocks.end(), [](const BlockDef& b) { return b.shape == Shape::hexahedron; });
+    return true;
+}
+
 std::string table_csv(const report::Table& t) {
     std::string o;
     auto line = [&](const std::vector<std::string>& cells) {
@@ -121,7 +133,7 @@ report::Document write_compare_report(const CaseResult& result, const CompareCon
                              r.dt > 0 ? number_text(r.dt, 3) : "-", number_text(r.wall_seconds, 3), run_note(r)});
     d.table(runs);
 
-    write_data(variants, base_index, dir);
+    write_data(variants, base_index, ctx.max_block_figures, dir);
     const auto images = draw_figures(variants, base_index, block_names, ctx.max_block_figures, dir, figure_note);
     auto has = [&](const std::string& p) { return std::find(images.begin(), images.end(), p) != images.end(); };
 
@@ -189,21 +201,31 @@ report::Document write_compare_report(const CaseResult& result, const CompareCon
     }
     write_text_atomic((fs::path(dir) / "differences.csv").string(), table_csv(diff));
     write_text_atomic((fs::path(dir) / "peaks.csv").string(), table_csv(peaks));
+    // the document shows the blocks that have figures; the CSVs hold every block
+    const size_t shown_rows = size_t(std::max(0, ctx.max_block_figures));
+    const std::string more = blocks.size() > shown_rows ? " The first " + std::to_string(shown_rows) + " of " +
+                                                              std::to_string(blocks.size()) + " free blocks are shown."
+                                                        : std::string();
+    auto first_rows = [&](report::Table t, size_t per_block) {
+        if (t.rows.size() > shown_rows * per_block) t.rows.resize(shown_rows * per_block);
+        return t;
+    };
     if (base.run) {
         d.heading(2, "Differences from " + base.run->variant.name);
-        d.paragraph("Per free block and variant (also in differences.csv).");
-        d.table(diff);
+        d.paragraph("Per free block and variant (every block in differences.csv)." + more);
+        d.table(first_rows(diff, variants.size() - 1));
     }
     d.heading(2, "Peak values");
     d.paragraph("Per free block and variant: the largest distance from the position at t = 0, rotation angle and "
-                "speed (also in peaks.csv).");
-    d.table(peaks);
+                "speed (every block in peaks.csv)." + more);
+    d.table(first_rows(peaks, variants.size()));
 
     // per block figures
     d.heading(2, "Blocks");
     if (!images.empty() && int(blocks.size()) > ctx.max_block_figures)
         d.paragraph("Figures for the first " + std::to_string(ctx.max_block_figures) + " of " +
-                    std::to_string(blocks.size()) + " free blocks; the histories of every block are in data/.");
+                    std::to_string(blocks.size()) + " free blocks (and their histories in data/); every block is in "
+                    "the runs' trajectory.csv.");
     if (images.empty()) d.paragraph("No figures: " + (figure_note.empty() ? std::string("nothing to draw") : figure_note));
     for (size_t b = 0; b < blocks.size() && int(b) < ctx.max_block_figures; ++b) {
         const std::string stem = "figures/block" + std::to_string(b + 1);
@@ -240,13 +262,15 @@ report::Document write_compare_report(const CaseResult& result, const CompareCon
 
     // what each engine could not represent
     d.heading(2, "What each engine could not represent");
+    d.paragraph("The rows of the capability matrix (cairn list) that this scene uses and an engine does not "
+                "represent exactly, and the variants an engine refused.");
     report::Table cap{{"engine", "feature", "support", "what is done instead"}, {}};
     std::set<std::string> used;
     for (const auto& r : result.runs) used.insert(r.variant.backend);
     for (const auto& b : ctx.backends) {
         if (!used.count(b.name)) continue;
         for (const auto& f : b.features)
-            if (f.support != Support::exact) cap.rows.push_back({b.name, f.feature, to_string(f.support), f.how.empty() ? "-" : f.how});
+            if (f.support != Support::exact && applies(f.feature, scene, b.name != "dem")) cap.rows.push_back({b.name, f.feature, to_string(f.support), f.how.empty() ? "-" : f.how});
     }
     for (const auto& r : result.runs)
         if (r.outcome == Outcome::refused)
@@ -256,7 +280,8 @@ report::Document write_compare_report(const CaseResult& result, const CompareCon
 
     d.heading(2, "Files");
     d.bullets({"differences.csv, peaks.csv, energy.csv: the tables above.",
-               "data/<variant>_block<k>.csv: t (s), x, y, z (m), rotation angle (rad), speed (m/s) of free block k.",
+               "data/<variant>_block<k>.csv: t (s), x, y, z (m), rotation angle (rad), speed (m/s) of free block k (the "
+               "first " + std::to_string(ctx.max_block_figures) + ").",
                "data/<variant>_block<k>_difference.csv: the same block's difference to the baseline.",
                "data/<variant>_energy.csv: the energy ledger (J) and contact count over time.",
                "runs/<scene>/<variant>/: each run's trajectory.csv and run.json, as cairn run writes them."});
