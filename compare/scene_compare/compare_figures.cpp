@@ -8,7 +8,7 @@
 #include "metrics/signal.hpp"
 #include "output/atomic_write.hpp"
 #include "report/gnuplot.hpp"
-#include "scene_compare/palette.hpp"
+#include "report/palette.hpp"
 
 namespace fs = std::filesystem;
 
@@ -107,7 +107,7 @@ std::string panel(const std::vector<VariantHistories>& variants, const std::vect
     for (size_t i = 0; i < which.size(); ++i) {
         const std::string& name = variants[size_t(which[i])].run->variant.name;
         o << (i ? ", \\\n     " : "") << q("../" + files[i]) << " skip 1 u 1:" << col << " w l lw 1.5 lc rgb '"
-          << variant_colour(name) << "' t " << q(name);
+          << report::variant_colour(name) << "' t " << q(name);
     }
     return o.str() + "\n";
 }

@@ -1,8 +1,8 @@
-#include "scene_compare/palette.hpp"
+#include "report/palette.hpp"
 
 #include <map>
 
-namespace cairn::scene_compare {
+namespace cairn::report {
 
 std::string variant_colour(const std::string& variant) {
     // black is kept for the analytic curve
@@ -15,4 +15,4 @@ std::string variant_colour(const std::string& variant) {
     return it == colours.end() ? "#7f7f7f" : it->second;
 }
 
-}  // namespace cairn::scene_compare
+}  // namespace cairn::report

@@ -1,12 +1,12 @@
 #pragma once
-/// One colour per variant, the same in every figure of a comparison report.
+/// One colour per variant, the same in every figure of every report (compare and validate).
 
 #include <string>
 
-namespace cairn::scene_compare {
+namespace cairn::report {
 
 /// "#rrggbb" of a variant ("dem-rigid", "bullet-matched", ...); the known variants have fixed
 /// colours (the engine's hue, darker for rigid contact), any other name a fixed grey
 std::string variant_colour(const std::string& variant);
 
-}  // namespace cairn::scene_compare
+}  // namespace cairn::report
