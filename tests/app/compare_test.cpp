@@ -140,3 +140,17 @@ TEST_CASE("validate --help lists the cases", "[app][cli]") {
     CHECK(r.exit_code == 0);
     CHECK_THAT(r.out, Contains("Usage: cairn validate") && Contains("rocking_slender") && Contains("friction_stick"));
 }
+
+TEST_CASE("cairn compare on a scene with a reference adds the verdicts and the analytic figure", "[app][compare]") {
+    const fs::path dir = fresh_dir("compare_reference");
+    const fs::path out = dir / "report";
+    // 0.2 s holds three periods of the 58.5 ms swing, enough for the stability metrics
+    const auto r = run_cairn("compare paper/stability --backends dem --model rigid --set run.duration=0.2 --out " +
+                                 out.string(), dir);
+    INFO(r.err);
+    REQUIRE(r.exit_code == 0);
+    const std::string md = read_file(out / "report.md");
+    CHECK_THAT(md, Contains("## Verdicts against the analytic reference") && Contains("| dem-rigid | equilibrium penetration |"));
+    CHECK_THAT(md, !Contains("dem-deformable"));   // --model rigid
+    CHECK(fs::exists(out / "figures" / "stability.png"));
+}
