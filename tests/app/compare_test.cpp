@@ -154,3 +154,22 @@ TEST_CASE("cairn compare on a scene with a reference adds the verdicts and the a
     CHECK_THAT(md, !Contains("dem-deformable"));   // --model rigid
     CHECK(fs::exists(out / "figures" / "stability.png"));
 }
+
+TEST_CASE("cairn compare writes the same numbers for one run at a time and for two", "[app][compare]") {
+    const fs::path dir = fresh_dir("compare_jobs");
+    {
+        std::ofstream f(dir / "column.toml");
+        f << kColumn;
+    }
+    // one at a time, dem uses every OpenMP thread; two at a time, one thread each
+    for (const char* jobs : {"1", "2"}) {
+        const auto r = run_cairn("compare " + (dir / "column.toml").string() + " --backends dem --set run.duration=0.1 --jobs " +
+                                     jobs + " -q --out " + (dir / jobs).string(), dir);
+        REQUIRE(r.exit_code == 0);
+    }
+    for (const char* f : {"differences.csv", "peaks.csv", "energy.csv", "data/dem-deformable_block3.csv"}) {
+        INFO(f);
+        CHECK(read_file(dir / "1" / f) == read_file(dir / "2" / f));
+        CHECK(!read_file(dir / "1" / f).empty());
+    }
+}
