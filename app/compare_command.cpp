@@ -1,6 +1,7 @@
 // `cairn compare`: one scene on every backend variant that takes it, compared with each other (and
 // with the analytic reference when the scene has one) in report.md and index.html
 #include <algorithm>
+#include <cctype>
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
@@ -72,7 +73,11 @@ int compare_command(const CompareOptions& options) {
         const std::string path = resolve_scene(options.scene);
         std::vector<Override> overrides;
         for (const auto& s : options.overrides) overrides.push_back(parse_override(s));
+        // the name is part of paths and figure scripts: only letters, digits, '-', '_' and '.' of it
         c.name = fs::path(path).stem().string();
+        for (auto& ch : c.name)
+            if (!std::isalnum(static_cast<unsigned char>(ch)) && ch != '-' && ch != '_' && ch != '.') ch = '_';
+        if (c.name.empty() || c.name[0] == '.') c.name = "scene" + c.name;
         c.scene = load_scene(path, overrides);
         for (const auto& v : scene_compare::compare_variants(c.scene, backends, options.model)) {
             validation::CaseRun r;

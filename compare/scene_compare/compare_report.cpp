@@ -124,7 +124,7 @@ report::Document write_compare_report(const CaseResult& result, const CompareCon
                   result.runs.size(), variants.size(), ctx.wall_seconds, ctx.jobs, ctx.jobs == 1 ? "" : "s");
     d.paragraph((scene.description.empty() ? "" : scene.description + ". ") + line);
     d.paragraph("Scene: " + ctx.scene_label + ". Command: " + ctx.command);
-    report::Table runs{{"variant", "engine", "contact", "block model", "outcome", "steps", "time step (s)",
+    report::Table runs{{"variant", "engine", "contact", "block model", "outcome", "steps (count)", "time step (s)",
                         "wall time (s)", "note"},
                        {}};
     for (const auto& r : result.runs)
@@ -155,7 +155,10 @@ report::Document write_compare_report(const CaseResult& result, const CompareCon
                                       x.verdict()});
                 }
         d.table(m);
-        const auto fig = report::write_figures({result}, dir);
+        // validate's figure puts the description in its title: only gnuplot-safe characters of it
+        validation::CaseResult safe = result;
+        safe.scene.description = gnuplot_label(safe.scene.description);
+        const auto fig = report::write_figures({safe}, dir);
         if (!fig.note.empty()) figure_note += fig.note;
         const auto it = fig.images.find(result.name);
         if (it != fig.images.end())
