@@ -26,6 +26,16 @@ struct BlockDiff {
     double compared_until = NAN;   ///< last time both runs cover, s
 };
 
+/// `run` minus `base` at the times of `run` that `base` covers (base interpolated linearly)
+struct DifferenceSeries {
+    std::vector<double> t;          ///< s
+    std::vector<double> distance;   ///< between the centres of mass, m
+    std::vector<double> angle;      ///< rotation angle of run minus base, rad
+    std::vector<double> speed;      ///< speed of run minus base, m/s
+};
+
+DifferenceSeries differences(const BlockHistory& run, const BlockHistory& base);
+
 /// `run` against `base` at the times of `run` that `base` covers (base interpolated linearly)
 BlockDiff block_diff(const BlockHistory& run, const BlockHistory& base, const DivergenceThresholds& th);
 

@@ -5,7 +5,7 @@
 #include <filesystem>
 #include <sstream>
 
-#include "metrics/signal.hpp"
+#include "scene_compare/block_diff.hpp"
 #include "output/atomic_write.hpp"
 #include "report/gnuplot.hpp"
 #include "report/palette.hpp"
@@ -27,17 +27,8 @@ std::string difference_csv(const BlockHistory& run, const BlockHistory& base) {
     std::ostringstream o;
     o.precision(10);
     o << "t [s],distance to baseline [m],rotation angle difference [rad],speed difference [m/s]\n";
-    if (base.t.size() < 2) return o.str();
-    const metrics::Series bx{base.t, base.x}, by{base.t, base.y}, bz{base.t, base.z};
-    const metrics::Series ba{base.t, base.angle}, bs{base.t, base.speed};
-    for (size_t i = 0; i < run.t.size(); ++i) {
-        const double t = run.t[i];
-        if (t < base.t.front() - 1e-12 || t > base.t.back() + 1e-12) continue;
-        const double dx = run.x[i] - metrics::interpolate(bx, t), dy = run.y[i] - metrics::interpolate(by, t),
-                     dz = run.z[i] - metrics::interpolate(bz, t);
-        o << t << "," << std::sqrt(dx * dx + dy * dy + dz * dz) << "," << run.angle[i] - metrics::interpolate(ba, t)
-          << "," << run.speed[i] - metrics::interpolate(bs, t) << "\n";
-    }
+    const DifferenceSeries d = differences(run, base);
+    for (size_t i = 0; i < d.t.size(); ++i) o << d.t[i] << "," << d.distance[i] << "," << d.angle[i] << "," << d.speed[i] << "\n";
     return o.str();
 }
 
