@@ -9,6 +9,7 @@
 
 #include "output/atomic_write.hpp"
 #include "report/figures.hpp"
+#include "report/palette.hpp"
 #include "report/text.hpp"
 #include "scene_compare/block_diff.hpp"
 #include "scene_compare/compare_figures.hpp"
@@ -124,11 +125,11 @@ report::Document write_compare_report(const CaseResult& result, const CompareCon
                   result.runs.size(), variants.size(), ctx.wall_seconds, ctx.jobs, ctx.jobs == 1 ? "" : "s");
     d.paragraph((scene.description.empty() ? "" : scene.description + ". ") + line);
     d.paragraph("Scene: " + ctx.scene_label + ". Command: " + ctx.command);
-    report::Table runs{{"variant", "engine", "contact", "block model", "outcome", "steps (count)", "time step (s)",
+    report::Table runs{{"variant", "colour in figures", "engine", "contact", "block model", "outcome", "steps (count)", "time step (s)",
                         "wall time (s)", "note"},
                        {}};
     for (const auto& r : result.runs)
-        runs.rows.push_back({r.variant.name, r.variant.backend, r.variant.contact_label(), r.variant.model,
+        runs.rows.push_back({r.variant.name, report::variant_colour_name(r.variant.name), r.variant.backend, r.variant.contact_label(), r.variant.model,
                              validation::to_string(r.outcome), r.steps ? std::to_string(r.steps) : "-",
                              r.dt > 0 ? number_text(r.dt, 3) : "-", number_text(r.wall_seconds, 3), run_note(r)});
     d.table(runs);
