@@ -1,6 +1,6 @@
 #include "report/document.hpp"
 
-#include <map>
+#include <cctype>
 #include <sstream>
 
 namespace cairn::report {
@@ -43,16 +43,6 @@ void Document::contents() {
     blocks.push_back(std::move(b));
 }
 
-std::string heading_anchor(const std::string& text) {
-    std::string o;
-    for (unsigned char c : text) {
-        if (c >= 'A' && c <= 'Z') o += char(c - 'A' + 'a');
-        else if ((c >= 'a' && c <= 'z') || (c >= '0' && c <= '9') || c == '-' || c == '_' || c >= 0x80) o += char(c);
-        else if (c == ' ') o += '-';
-    }
-    return o;
-}
-
 void append(Document& into, const Document& from, const std::string& image_prefix) {
     for (Block b : from.blocks) {
         if (b.kind == Block::Kind::image) b.image = image_prefix + b.image;
@@ -61,20 +51,6 @@ void append(Document& into, const Document& from, const std::string& image_prefi
 }
 
 namespace {
-
-/// the anchor of every heading block (empty for other blocks), repeated anchors numbered "-1",
-/// "-2" as GitHub does
-std::vector<std::string> anchors(const Document& d) {
-    std::vector<std::string> out(d.blocks.size());
-    std::map<std::string, int> seen;
-    for (size_t i = 0; i < d.blocks.size(); ++i) {
-        if (d.blocks[i].kind != Block::Kind::heading) continue;
-        std::string a = heading_anchor(d.blocks[i].text);
-        const int n = seen[a]++;
-        out[i] = n ? a + "-" + std::to_string(n) : a;
-    }
-    return out;
-}
 
 std::string md_cell(const std::string& s) {
     std::string o;
@@ -97,25 +73,38 @@ std::string esc(const std::string& s) {
 }
 
 const char* cell_class(const std::string& s) {
-    if (s.rfind("MISS", 0) == 0 || s.rfind("failed", 0) == 0 || s.rfind("unstable", 0) == 0) return " class=\"miss\"";
+    if (s.rfind("miss", 0) == 0 || s.rfind("failed", 0) == 0 || s.rfind("unstable", 0) == 0) return " class=\"miss\"";
     if (s.rfind("pass", 0) == 0) return " class=\"pass\"";
-    if (s.rfind("cannot", 0) == 0) return " class=\"na\"";
+    if (s.rfind("cannot", 0) == 0 || s.rfind("not comparable", 0) == 0 || s.rfind("n.c.", 0) == 0) return " class=\"na\"";
     return "";
+}
+
+std::string link_of(const Table& t, size_t row, size_t col) {
+    if (row >= t.links.size() || col >= t.links[row].size()) return "";
+    return t.links[row][col];
 }
 
 }  // namespace
 
+std::string anchor_of(const std::string& heading) {
+    std::string a;
+    for (unsigned char c : heading) {
+        if (c == ' ') a += '-';
+        else if (std::isalnum(c) || c == '-' || c == '_') a += char(std::tolower(c));
+    }
+    return a;
+}
+
 std::string to_markdown(const Document& d) {
     std::ostringstream o;
     o << "# " << d.title << "\n\n";
-    const auto anchor = anchors(d);
     for (const auto& b : d.blocks) {
         switch (b.kind) {
             case Block::Kind::contents:
                 for (size_t i = 0; i < d.blocks.size(); ++i)
                     if (d.blocks[i].kind == Block::Kind::heading && d.blocks[i].level <= 3)
                         o << std::string(size_t(2 * (d.blocks[i].level - 2)), ' ') << "- [" << d.blocks[i].text
-                          << "](#" << anchor[i] << ")\n";
+                          << "](#" << anchor_of(d.blocks[i].text) << ")\n";
                 o << "\n";
                 break;
             case Block::Kind::heading: o << std::string(size_t(b.level), '#') << " " << b.text << "\n\n"; break;
@@ -130,9 +119,14 @@ std::string to_markdown(const Document& d) {
                 o << "\n|";
                 for (size_t i = 0; i < b.table.header.size(); ++i) o << "---|";
                 o << "\n";
-                for (const auto& r : b.table.rows) {
+                for (size_t ri = 0; ri < b.table.rows.size(); ++ri) {
+                    const auto& r = b.table.rows[ri];
                     o << "|";
-                    for (const auto& c : r) o << " " << md_cell(c) << " |";
+                    for (size_t ci = 0; ci < r.size(); ++ci) {
+                        const std::string link = link_of(b.table, ri, ci);
+                        if (link.empty()) o << " " << md_cell(r[ci]) << " |";
+                        else o << " [" << md_cell(r[ci]) << "](#" << anchor_of(link) << ") |";
+                    }
                     o << "\n";
                 }
                 o << "\n";
@@ -154,7 +148,6 @@ std::string to_html(const Document& d) {
          "td.na{background:#eee;color:#666}img{max-width:100%;border:1px solid #ccc}\n"
          "figcaption{font-style:italic;margin-bottom:1.5em}\nul.toc{list-style:none;padding-left:0}li.toc3{padding-left:1.5em}\n</style></head><body>\n";
     o << "<h1>" << esc(d.title) << "</h1>\n";
-    const auto anchor = anchors(d);
     for (size_t k = 0; k < d.blocks.size(); ++k) {
         const Block& b = d.blocks[k];
         switch (b.kind) {
@@ -162,13 +155,13 @@ std::string to_html(const Document& d) {
                 o << "<nav><ul class=\"toc\">\n";
                 for (size_t i = 0; i < d.blocks.size(); ++i)
                     if (d.blocks[i].kind == Block::Kind::heading && d.blocks[i].level <= 3)
-                        o << "<li class=\"toc" << d.blocks[i].level << "\"><a href=\"#" << esc(anchor[i]) << "\">"
+                        o << "<li class=\"toc" << d.blocks[i].level << "\"><a href=\"#" << esc(anchor_of(d.blocks[i].text)) << "\">"
                           << esc(d.blocks[i].text) << "</a></li>\n";
                 o << "</ul></nav>\n";
                 break;
             }
             case Block::Kind::heading:
-                o << "<h" << b.level << " id=\"" << esc(anchor[k]) << "\">" << esc(b.text) << "</h" << b.level << ">\n";
+                o << "<h" << b.level << " id=\"" << esc(anchor_of(b.text)) << "\">" << esc(b.text) << "</h" << b.level << ">\n";
                 break;
             case Block::Kind::paragraph: o << "<p>" << esc(b.text) << "</p>\n"; break;
             case Block::Kind::bullets:
@@ -180,9 +173,16 @@ std::string to_html(const Document& d) {
                 o << "<table>\n<tr>";
                 for (const auto& h : b.table.header) o << "<th>" << esc(h) << "</th>";
                 o << "</tr>\n";
-                for (const auto& r : b.table.rows) {
+                for (size_t ri = 0; ri < b.table.rows.size(); ++ri) {
+                    const auto& r = b.table.rows[ri];
                     o << "<tr>";
-                    for (const auto& c : r) o << "<td" << cell_class(c) << ">" << esc(c) << "</td>";
+                    for (size_t ci = 0; ci < r.size(); ++ci) {
+                        const std::string link = link_of(b.table, ri, ci);
+                        o << "<td" << cell_class(r[ci]) << ">";
+                        if (link.empty()) o << esc(r[ci]);
+                        else o << "<a href=\"#" << esc(anchor_of(link)) << "\">" << esc(r[ci]) << "</a>";
+                        o << "</td>";
+                    }
                     o << "</tr>\n";
                 }
                 o << "</table>\n";
