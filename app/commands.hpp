@@ -58,6 +58,21 @@ struct ValidateOptions {
 /// `cairn validate`: the paper's cases on every backend against their analytic references
 int validate_command(const ValidateOptions& options);
 
+/// Options of `cairn compare`.
+struct CompareOptions {
+    std::string scene;                        ///< scene file or shipped scene name
+    std::vector<std::string> backends;        ///< empty or "all" = every available backend
+    std::string model = "both";               ///< block models of dem: "rigid", "deformable" or "both"
+    std::string out_dir;                      ///< report dir; empty = out/compare/<scene file stem>
+    std::string baseline;                     ///< variant the others are compared with; empty = dem-rigid
+    std::vector<std::string> overrides;       ///< "key=value" applied to the scene
+    int jobs = 0;                             ///< runs at a time; 0 = the machine's cores
+    bool quiet = false;                       ///< no progress lines
+};
+
+/// `cairn compare`: one scene on every backend variant that takes it, and the comparison report
+int compare_command(const CompareOptions& options);
+
 /// Options of `cairn bench` (docs/bench.md).
 struct BenchOptions {
     std::string out_dir = "out/bench";   ///< trade.csv, stability.csv, wall.csv, bench.md, bench.html, figures/

@@ -1,4 +1,5 @@
 // the cairn executable: run scenes on backends, list what is available
+#include <algorithm>
 #include <exception>
 #include <iostream>
 
@@ -7,10 +8,13 @@
 #include "commands.hpp"
 #include "run/stop.hpp"
 #include "limit_options.hpp"
+#include "suggest.hpp"
+#include "validation/plan.hpp"
 
 int main(int argc, char** argv) {
     using namespace cairn;
-    CLI::App app{"cairn: a testbed for masonry block dynamics (scenes on several engines)"};
+    // the name is fixed so that usage lines say "cairn", not the path it was started by
+    CLI::App app{"cairn: a testbed for masonry block dynamics (scenes on several engines)", "cairn"};
     app.set_version_flag("--version", std::string("cairn ") + CAIRN_VERSION);
     app.require_subcommand(1);
 
@@ -52,8 +56,28 @@ int main(int argc, char** argv) {
     study_inertia->add_option("--n", inertia.ns, "elements per side (default 1,2,4,8)")->delimiter(',');
     study_inertia->add_flag("--quiet,-q", inertia.quiet, "no progress lines");
 
+    CompareOptions cmp;
+    auto* compare = app.add_subcommand("compare", "run one scene on every backend variant and compare them in a report");
+    compare->add_option("scene", cmp.scene, "scene file, or a shipped scene name (cairn list)")->required();
+    compare->add_option("--backends", cmp.backends, "all, or comma-separated backend names (default all)")
+        ->delimiter(',');
+    compare->add_option("--model", cmp.model, "block model of the dem runs: rigid, deformable or both (default both)")
+        ->check(CLI::IsMember({"rigid", "deformable", "both"}));
+    compare->add_option("--out,-o", cmp.out_dir, "report directory (default out/compare/<scene>)");
+    compare->add_option("--jobs,-j", cmp.jobs, "runs at a time (default: the machine's cores)")->check(CLI::Range(1, 64));
+    compare->add_option("--baseline", cmp.baseline, "variant the others are compared with (default dem-rigid)");
+    compare->add_option("--set", cmp.overrides, "override a scene key: --set key=value (repeatable)")
+        ->take_all()
+        ->allow_extra_args(false);
+    compare->add_flag("--quiet,-q", cmp.quiet, "no progress lines");
+
     ValidateOptions val;
     auto* validate = app.add_subcommand("validate", "run the paper's cases on every backend and write the report");
+    {
+        std::string cases = "Cases (scenarios/paper/):";
+        for (const auto& c : validation::paper_cases()) cases += " " + c;
+        validate->footer(cases);
+    }
     validate->add_option("--out,-o", val.out_dir, "output directory (default out/validation)");
     validate->add_option("--backends", val.backends, "comma-separated backend names")->delimiter(',');
     validate->add_option("--cases", val.cases, "comma-separated case names (default: all)")->delimiter(',');
@@ -90,6 +114,23 @@ int main(int argc, char** argv) {
         }
     }
 
+    // bare `cairn`: the usage and the commands, exit 2 (a command is required)
+    if (argc < 2) {
+        std::cout << app.help();
+        return kExitBadInput;
+    }
+    // a first word that is no option and no command: say which command was meant
+    if (argv[1][0] != '-') {
+        std::vector<std::string> names;
+        for (const auto* sub : app.get_subcommands({})) names.push_back(sub->get_name());
+        if (std::find(names.begin(), names.end(), std::string(argv[1])) == names.end()) {
+            std::string all;
+            for (const auto& n : names) all += (all.empty() ? "" : ", ") + n;
+            std::cerr << "error: unknown command '" << argv[1] << "'" << did_you_mean(argv[1], names)
+                      << "\ncommands: " << all << " (cairn --help)\n";
+            return kExitBadInput;
+        }
+    }
     try {
         app.parse(argc, argv);
     } catch (const CLI::ParseError& e) {
@@ -106,6 +147,7 @@ int main(int argc, char** argv) {
         if (app.got_subcommand(run_all)) return run_all_command(all);
         if (study_inertia->parsed()) return study_inertia_command(inertia);
         if (app.got_subcommand(validate)) return validate_command(val);
+        if (app.got_subcommand(compare)) return compare_command(cmp);
         for (auto* sub : bench_cmd->get_subcommands())
             if (sub->parsed()) return bench_command(sub->get_name(), bench);
     } catch (const std::exception& e) {

@@ -9,6 +9,7 @@
 #include "output/atomic_write.hpp"
 #include "output/run_record.hpp"
 #include "output/staged_dir.hpp"
+#include "progress_line.hpp"
 #include "output/trajectory_csv.hpp"
 #include "registry.hpp"
 #include "run/runner.hpp"
@@ -58,15 +59,6 @@ void apply_model(Scene& scene, const std::string& model) {
         if (!b.fixed) b.model = m;
 }
 
-/// a progress line on stderr, rewritten in place
-ProgressFn progress_line(const RunJob& job) {
-    if (!job.progress) return {};
-    return [label = job.label](double f) {
-        std::fprintf(stderr, "\r%s: %3.0f %%", label.c_str(), 100.0 * f);
-        std::fflush(stderr);
-    };
-}
-
 }  // namespace
 
 JobOutcome execute_run(const RunJob& job) {
@@ -104,14 +96,18 @@ JobOutcome execute_run(const RunJob& job) {
     const fs::path dir = out->path();
     TrajectoryCsvFile csv((dir / kTrajectory).string());
     RunResult result;
+    // on a terminal, a progress line: simulated time, steps/s, time left
+    ProgressLine progress(job.label, scene.run.duration);
+    TeeSink sink({&csv, &progress});
     try {
-        result = run_scene(*backend, scene, request.options, csv, progress_line(job));
+        result = run_scene(*backend, scene, request.options, job.progress ? static_cast<SampleSink&>(sink) : csv,
+                           job.progress ? progress.function() : ProgressFn{});
     } catch (const Error& e) {
         o.status = JobStatus::refused;   // nothing written: the staging directory goes
         o.message = e.what();
         return o;
     }
-    if (job.progress) std::fprintf(stderr, "\r%*s\r", int(job.label.size()) + 8, "");
+    progress.clear();
 
     const bool completed = result.status == RunStatus::completed;
     if (!completed) fs::rename(dir / kTrajectory, dir / kPartial);

@@ -5,6 +5,7 @@
 #include <filesystem>
 
 #include "error.hpp"
+#include "suggest.hpp"
 
 namespace fs = std::filesystem;
 
@@ -37,8 +38,12 @@ std::string resolve_scene(const std::string& arg) {
     fs::path candidate = fs::path(scenarios_dir()) / arg;
     if (candidate.extension() != ".toml") candidate += ".toml";
     if (fs::is_regular_file(candidate, ec)) return candidate.string();
+    std::vector<std::string> names;
+    for (const auto& s : shipped_scenes()) names.push_back(s.name);
+    std::string name = arg;
+    if (name.size() > 5 && name.compare(name.size() - 5, 5, ".toml") == 0) name.resize(name.size() - 5);
     throw Error("no scene '" + arg + "': not a file, and not a scene name in " + scenarios_dir() +
-                " (`cairn list` shows the scenes)");
+                did_you_mean(name, names) + " (cairn list shows the scenes)");
 }
 
 }  // namespace cairn

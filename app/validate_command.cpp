@@ -1,5 +1,6 @@
 // `cairn validate`: every paper case on every backend variant, judged against the analytic
 // references, with summary.csv, report.md, index.html and a verdict on the terminal
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
@@ -17,6 +18,7 @@
 #include "study/study_report.hpp"
 #include "scene/scene_io.hpp"
 #include "scenes.hpp"
+#include "suggest.hpp"
 #include "validation/plan.hpp"
 #include "validation/run_cases.hpp"
 
@@ -62,6 +64,9 @@ int validate_command(const ValidateOptions& options) {
         std::vector<Override> overrides;
         for (const auto& s : options.overrides) overrides.push_back(parse_override(s));
         for (const auto& n : names) {
+            const auto& known = validation::paper_cases();
+            if (n.find('/') == std::string::npos && std::find(known.begin(), known.end(), n) == known.end())
+                throw Error("--cases " + n + ": no such case" + did_you_mean(n, known) + " (cairn validate --help lists them)");
             const std::string path = resolve_scene(n.find('/') == std::string::npos ? "paper/" + n : n);
             validation::CaseResult c;
             c.name = fs::path(n).filename().string();

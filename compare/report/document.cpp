@@ -37,6 +37,12 @@ void Document::image(std::string path, std::string caption) {
     blocks.push_back(std::move(b));
 }
 
+void Document::contents() {
+    Block b;
+    b.kind = Block::Kind::contents;
+    blocks.push_back(std::move(b));
+}
+
 void append(Document& into, const Document& from, const std::string& image_prefix) {
     for (Block b : from.blocks) {
         if (b.kind == Block::Kind::image) b.image = image_prefix + b.image;
@@ -94,6 +100,13 @@ std::string to_markdown(const Document& d) {
     o << "# " << d.title << "\n\n";
     for (const auto& b : d.blocks) {
         switch (b.kind) {
+            case Block::Kind::contents:
+                for (size_t i = 0; i < d.blocks.size(); ++i)
+                    if (d.blocks[i].kind == Block::Kind::heading && d.blocks[i].level <= 3)
+                        o << std::string(size_t(2 * (d.blocks[i].level - 2)), ' ') << "- [" << d.blocks[i].text
+                          << "](#" << anchor_of(d.blocks[i].text) << ")\n";
+                o << "\n";
+                break;
             case Block::Kind::heading: o << std::string(size_t(b.level), '#') << " " << b.text << "\n\n"; break;
             case Block::Kind::paragraph: o << b.text << "\n\n"; break;
             case Block::Kind::bullets:
@@ -133,10 +146,20 @@ std::string to_html(const Document& d) {
          "td,th{border:1px solid #bbb;padding:3px 7px;text-align:left;vertical-align:top}\n"
          "th{background:#eee}td.pass{background:#d8f0d8}td.miss{background:#f6d0d0;font-weight:bold}\n"
          "td.na{background:#eee;color:#666}img{max-width:100%;border:1px solid #ccc}\n"
-         "figcaption{font-style:italic;margin-bottom:1.5em}\n</style></head><body>\n";
+         "figcaption{font-style:italic;margin-bottom:1.5em}\nul.toc{list-style:none;padding-left:0}li.toc3{padding-left:1.5em}\n</style></head><body>\n";
     o << "<h1>" << esc(d.title) << "</h1>\n";
-    for (const auto& b : d.blocks) {
+    for (size_t k = 0; k < d.blocks.size(); ++k) {
+        const Block& b = d.blocks[k];
         switch (b.kind) {
+            case Block::Kind::contents: {
+                o << "<nav><ul class=\"toc\">\n";
+                for (size_t i = 0; i < d.blocks.size(); ++i)
+                    if (d.blocks[i].kind == Block::Kind::heading && d.blocks[i].level <= 3)
+                        o << "<li class=\"toc" << d.blocks[i].level << "\"><a href=\"#" << esc(anchor_of(d.blocks[i].text)) << "\">"
+                          << esc(d.blocks[i].text) << "</a></li>\n";
+                o << "</ul></nav>\n";
+                break;
+            }
             case Block::Kind::heading:
                 o << "<h" << b.level << " id=\"" << esc(anchor_of(b.text)) << "\">" << esc(b.text) << "</h" << b.level << ">\n";
                 break;

@@ -26,7 +26,7 @@ std::string anchor_of(const std::string& heading);
 
 /// One block of the document.
 struct Block {
-    enum class Kind { heading, paragraph, bullets, table, image } kind = Kind::paragraph;
+    enum class Kind { heading, paragraph, bullets, table, image, contents } kind = Kind::paragraph;
     int level = 2;                       ///< heading level (1-3)
     std::string text;                    ///< heading, paragraph, image caption
     std::vector<std::string> items;      ///< bullets
@@ -43,6 +43,8 @@ struct Document {
     void bullets(std::vector<std::string> items);
     void table(Table t);
     void image(std::string path, std::string caption);
+    /// a table of contents: links to every level-2 and level-3 heading of the document
+    void contents();
 };
 
 /// append the blocks of `from` to `into` (not its title), image paths prefixed by `image_prefix`

@@ -10,6 +10,7 @@
 
 #include "geometry/hexahedron.hpp"
 #include "report/gnuplot.hpp"
+#include "report/palette.hpp"
 #include "metrics/signal.hpp"
 #include "output/atomic_write.hpp"
 
@@ -77,13 +78,6 @@ std::string fixed_outline(const Scene& scene) {
     return o.str();
 }
 
-/// a ten-colour palette, none of them black (black is the analytic curve)
-const char* kPalette =
-    "set linetype 1 lc rgb '#1f77b4'\nset linetype 2 lc rgb '#ff7f0e'\nset linetype 3 lc rgb '#2ca02c'\n"
-    "set linetype 4 lc rgb '#d62728'\nset linetype 5 lc rgb '#9467bd'\nset linetype 6 lc rgb '#8c564b'\n"
-    "set linetype 7 lc rgb '#e377c2'\nset linetype 8 lc rgb '#17becf'\nset linetype 9 lc rgb '#bcbd22'\n"
-    "set linetype 10 lc rgb '#7f7f7f'\n";
-
 std::string quoted(const std::string& s) {
     std::string o = "\"";
     for (char c : s) o += c == '"' ? std::string("\\\"") : std::string(1, c);
@@ -124,7 +118,7 @@ FigureSet write_figures(const std::vector<validation::CaseResult>& cases, const 
         const bool clip = sorted.size() > 1 && sorted[1] > 0.0 && sorted[0] > 3.0 * sorted[1];
         std::ostringstream gp;
         gp << "set terminal " << term << "\nset output " << quoted(c.name + ".png") << "\n"
-           << kPalette << "set multiplot title " << quoted(c.name + ": " + c.scene.description) << "\n"
+           << "set multiplot title " << quoted(c.name + ": " + c.scene.description) << "\n"
            << "set grid\nset key outside right top\nset lmargin 12\nset rmargin 24\nset autoscale xfix\n"
            << "set size 1,0.60\nset origin 0,0.37\nset ylabel " << quoted(runs.front()->analysis.quantity) << "\n"
            << "plot ";
@@ -142,8 +136,8 @@ FigureSet write_figures(const std::vector<validation::CaseResult>& cases, const 
         for (size_t i = 0; i < runs.size(); ++i) {
             const std::string file = c.name + "_" + runs[i]->variant.name + ".dat";
             write_text_atomic((fig / file).string(), curve_data(*runs[i], runs.front()));
-            lines.push_back(quoted(file) + " u 1:2 w l lw 1.5 lc " + std::to_string(i + 1) + " t " +
-                            quoted(runs[i]->variant.name));
+            lines.push_back(quoted(file) + " u 1:2 w l lw 1.5 lc rgb '" + variant_colour(runs[i]->variant.name) +
+                            "' t " + quoted(runs[i]->variant.name));
         }
         for (size_t i = 0; i < lines.size(); ++i) gp << (i ? ", \\\n     " : "") << lines[i];
         std::string dlabel = analytic ? "run - analytic" : "run - " + runs.front()->variant.name;
@@ -156,7 +150,8 @@ FigureSet write_figures(const std::vector<validation::CaseResult>& cases, const 
         gp << "\nset size 1,0.37\nset origin 0,0\nset xlabel 't (s)'\nset ylabel " << quoted(dlabel) << "\nplot ";
         for (size_t i = 0; i < runs.size(); ++i)
             gp << (i ? ", \\\n     " : "") << quoted(c.name + "_" + runs[i]->variant.name + ".dat")
-               << " u 1:4 w l lw 1.5 lc " << i + 1 << " t " << quoted(runs[i]->variant.name);
+               << " u 1:4 w l lw 1.5 lc rgb '" << variant_colour(runs[i]->variant.name) << "' t "
+               << quoted(runs[i]->variant.name);
         gp << "\nunset multiplot\n";
         write_text_atomic((fig / (c.name + ".gp")).string(), gp.str());
         std::vector<std::string> images{"figures/" + c.name + ".png"};

@@ -33,7 +33,7 @@ namespace {
 
 /// one run: build, step, write its files, analyse; never throws
 void execute(CaseRun& run, const fs::path& dir, const Scene& case_scene, const std::string& scene_path,
-             const RunPlan& plan, const BackendFactory& make) {
+             const RunPlan& plan, const BackendFactory& make, const ProgressFn& progress) {
     Scene scene = case_scene;
     const BlockModel model = run.variant.model == "deformable" ? BlockModel::deformable : BlockModel::rigid;
     for (auto& b : scene.blocks)
@@ -53,7 +53,7 @@ void execute(CaseRun& run, const fs::path& dir, const Scene& case_scene, const s
     try {
         backend = make(run.variant.backend);
         fs::create_directories(dir);
-        result = run_scene(*backend, scene, request.options, sink);
+        result = run_scene(*backend, scene, request.options, sink, progress);
     } catch (const Error& e) {
         std::error_code ec;
         fs::remove(dir, ec);   // refused before the first sample: the directory is still empty
@@ -80,7 +80,7 @@ void execute(CaseRun& run, const fs::path& dir, const Scene& case_scene, const s
         run.message = std::string("cannot write outputs: ") + e.what();
     }
     try {
-        if (run.samples.size() >= 3) {
+        if (run.samples.size() >= 3 && scene.reference) {   // a scene without a reference has nothing to judge
             run.analysis = cases::analyse_case(scene, run.samples, contact_kind(run.variant, scene));
             run.analysed = true;
         }
@@ -146,13 +146,16 @@ void run_plan(RunPlan& plan, const BackendFactory& make) {
         for (size_t j; !stop_requested() && (j = next++) < jobs.size();) {
             CaseResult& c = plan.cases[jobs[j].c];
             CaseRun& run = c.runs[jobs[j].r];
+            ProgressFn progress;
+            if (plan.progress) progress = [&plan, j](double f) { plan.progress(j, f); };
             auto it = serial.find(run.variant.backend);
             if (it != serial.end()) {
                 std::lock_guard<std::mutex> lock(it->second);
-                execute(run, jobs[j].dir, c.scene, plan.scene_paths[jobs[j].c], plan, make);
+                execute(run, jobs[j].dir, c.scene, plan.scene_paths[jobs[j].c], plan, make, progress);
             } else {
-                execute(run, jobs[j].dir, c.scene, plan.scene_paths[jobs[j].c], plan, make);
+                execute(run, jobs[j].dir, c.scene, plan.scene_paths[jobs[j].c], plan, make, progress);
             }
+            if (plan.progress) plan.progress(j, 1.0);
             size_t n = ++done;
             if (!plan.quiet) {
                 std::lock_guard<std::mutex> lock(print);

@@ -59,6 +59,9 @@ struct RunPlan {
     /// per-thread collision data)
     std::vector<std::string> serial_backends;
     bool quiet = false;              ///< no progress lines on stderr
+    /// called from the pool threads with a run's index (cases and runs in plan order) and its
+    /// fraction done, 1 once it ended; the callee serialises; empty = none
+    std::function<void(size_t run, double fraction)> progress;
 };
 
 /// run every listed run of the plan, then analyse each against its case and diff the variants;

@@ -1,0 +1,63 @@
+#include "scene_compare/block_diff.hpp"
+
+#include <algorithm>
+
+#include "metrics/signal.hpp"
+
+namespace cairn::scene_compare {
+
+DifferenceSeries differences(const BlockHistory& run, const BlockHistory& base) {
+    DifferenceSeries d;
+    if (base.t.size() < 2) return d;
+    const metrics::Series bx{base.t, base.x}, by{base.t, base.y}, bz{base.t, base.z};
+    const metrics::Series ba{base.t, base.angle}, bs{base.t, base.speed};
+    for (size_t i = 0; i < run.t.size(); ++i) {
+        const double t = run.t[i];
+        if (t < base.t.front() - 1e-12 || t > base.t.back() + 1e-12) continue;
+        const double dx = run.x[i] - metrics::interpolate(bx, t), dy = run.y[i] - metrics::interpolate(by, t),
+                     dz = run.z[i] - metrics::interpolate(bz, t);
+        d.t.push_back(t);
+        d.distance.push_back(std::sqrt(dx * dx + dy * dy + dz * dz));
+        d.angle.push_back(run.angle[i] - metrics::interpolate(ba, t));
+        d.speed.push_back(run.speed[i] - metrics::interpolate(bs, t));
+    }
+    return d;
+}
+
+BlockDiff block_diff(const BlockHistory& run, const BlockHistory& base, const DivergenceThresholds& th) {
+    const DifferenceSeries s = differences(run, base);
+    BlockDiff d;
+    if (s.t.empty()) return d;
+    double sp = 0.0, sa = 0.0, ss = 0.0;
+    d.position_peak = 0.0;
+    d.angle_peak = 0.0;
+    for (size_t i = 0; i < s.t.size(); ++i) {
+        const double dp = s.distance[i], da = std::abs(s.angle[i]), ds = s.speed[i];
+        sp += dp * dp;
+        sa += da * da;
+        ss += ds * ds;
+        d.position_peak = std::max(d.position_peak, dp);
+        d.angle_peak = std::max(d.angle_peak, da);
+        if (std::isnan(d.position_diverged) && dp > th.position) d.position_diverged = s.t[i];
+        if (std::isnan(d.angle_diverged) && da > th.angle) d.angle_diverged = s.t[i];
+    }
+    const double n = double(s.t.size());
+    d.position_rms = std::sqrt(sp / n);
+    d.angle_rms = std::sqrt(sa / n);
+    d.speed_rms = std::sqrt(ss / n);
+    d.compared_until = s.t.back();
+    return d;
+}
+
+BlockPeaks block_peaks(const BlockHistory& h) {
+    BlockPeaks p;
+    for (size_t i = 0; i < h.t.size(); ++i) {
+        const double dx = h.x[i] - h.x[0], dy = h.y[i] - h.y[0], dz = h.z[i] - h.z[0];
+        p.displacement = std::max(p.displacement, std::sqrt(dx * dx + dy * dy + dz * dz));
+        p.angle = std::max(p.angle, h.angle[i]);
+        p.speed = std::max(p.speed, h.speed[i]);
+    }
+    return p;
+}
+
+}  // namespace cairn::scene_compare

@@ -1,0 +1,295 @@
+#include "scene_compare/compare_report.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <set>
+#include <sstream>
+
+#include "output/atomic_write.hpp"
+#include "report/figures.hpp"
+#include "report/palette.hpp"
+#include "report/text.hpp"
+#include "scene_compare/block_diff.hpp"
+#include "scene_compare/compare_figures.hpp"
+
+namespace fs = std::filesystem;
+
+namespace cairn::scene_compare {
+
+using report::number_text;
+using validation::CaseResult;
+using validation::CaseRun;
+using validation::Outcome;
+
+Baseline choose_baseline(const CaseResult& result, const std::string& wanted) {
+    auto completed = [](const CaseRun& r) { return r.outcome == Outcome::completed && r.samples.size() >= 2; };
+    for (const auto& r : result.runs)
+        if (!wanted.empty() && r.variant.name == wanted && completed(r)) return {&r, "chosen with --baseline"};
+    for (const auto& r : result.runs)
+        if (r.variant.name == "dem-rigid" && completed(r))
+            return {&r, wanted.empty() ? "the default" : "the default (" + wanted + " did not complete)"};
+    for (const auto& r : result.runs)
+        if (completed(r)) return {&r, "the first variant that completed (dem-rigid did not run or complete)"};
+    return {};
+}
+
+namespace {
+
+std::string or_never(double t) { return std::isnan(t) ? "never" : number_text(t, 4); }
+
+std::string run_note(const CaseRun& r) {
+    std::string m = r.message;
+    if (m.size() > 200) m = m.substr(0, 197) + "...";
+    return m.empty() ? "-" : m;
+}
+
+/// the energies of a run's last sample and the largest balance error on the way
+std::vector<std::string> energy_row(const CaseRun& r) {
+    const Energies& e = r.samples.back().energy;
+    const double e0 = r.samples.front().energy.total();
+    double worst = 0.0;
+    for (const auto& s : r.samples) worst = std::max(worst, std::abs(s.energy.total() - e0));
+    return {r.variant.name,         number_text(e.kinetic, 4),   number_text(e.potential - r.samples.front().energy.potential, 4),
+            number_text(e.contact, 4), number_text(e.strain, 4), number_text(e.dissipated, 4),
+            number_text(e.external, 4), number_text(e.total() - e0, 3), number_text(worst, 3)};
+}
+
+std::vector<std::string> contact_row(const CaseRun& r) {
+    int most = 0;
+    double sum = 0.0;
+    for (const auto& s : r.samples) {
+        most = std::max(most, s.contacts);
+        sum += s.contacts;
+    }
+    return {r.variant.name, std::to_string(r.samples.front().contacts), std::to_string(r.samples.back().contacts),
+            std::to_string(most), number_text(sum / double(r.samples.size()), 4)};
+}
+
+/// false for a capability row the scene does not use (a damping it does not set, hexahedra it does
+/// not have, deformable blocks the reference engines are never asked for); rows not named here apply
+bool applies(const std::string& feature, const Scene& scene, bool engine) {
+    if (feature == "mass-proportional damping") return scene.damping.alpha != 0.0;
+    if (feature == "stiffness-proportional damping") return scene.damping.beta != 0.0;
+    if (feature == "normal contact damping") return scene.contact.damping_rule != ContactDampingRule::none;
+    if (feature == "deformable blocks") return !engine;
+    if (feature == "general convex hexahedra")
+        return std::any_of(scene.blocks.begin(), scene.blocks.end(), [](const BlockDef& b) { return b.shape == Shape::hexahedron; });
+    return true;
+}
+
+std::string table_csv(const report::Table& t) {
+    std::string o;
+    auto line = [&](const std::vector<std::string>& cells) {
+        for (size_t i = 0; i < cells.size(); ++i) o += (i ? "," : "") + report::csv_field(cells[i]);
+        o += "\n";
+    };
+    line(t.header);
+    for (const auto& r : t.rows) line(r);
+    return o;
+}
+
+}  // namespace
+
+report::Document write_compare_report(const CaseResult& result, const CompareContext& ctx, const std::string& dir,
+                                      std::string& figure_note) {
+    const Scene& scene = result.scene;
+    report::Document d;
+    d.title = "Comparison of " + result.name + " across engines";
+    d.contents();
+
+    const auto blocks = free_blocks(scene);
+    std::vector<std::string> block_names;
+    for (const auto& b : blocks) block_names.push_back(b.name);
+    std::vector<VariantHistories> variants;
+    for (const auto& r : result.runs) {
+        if (r.samples.size() < 2) continue;
+        VariantHistories v;
+        v.run = &r;
+        for (size_t b = 0; b < blocks.size(); ++b) v.blocks.push_back(block_history(r.samples, int(b)));
+        variants.push_back(std::move(v));
+    }
+    const Baseline base = choose_baseline(result, ctx.baseline);
+    int base_index = -1;
+    for (size_t v = 0; v < variants.size(); ++v)
+        if (variants[v].run == base.run) base_index = int(v);
+
+    // summary
+    d.heading(2, "Summary");
+    char line[400];
+    std::snprintf(line, sizeof line,
+                  "%zu free block%s, %zu fixed, %g s simulated. %zu variants listed, %zu produced results. "
+                  "Wall time %.1f s with %d run%s at a time.",
+                  blocks.size(), blocks.size() == 1 ? "" : "s", scene.blocks.size() - blocks.size(), scene.run.duration,
+                  result.runs.size(), variants.size(), ctx.wall_seconds, ctx.jobs, ctx.jobs == 1 ? "" : "s");
+    d.paragraph((scene.description.empty() ? "" : scene.description + ". ") + line);
+    d.paragraph("Scene: " + ctx.scene_label + ". Command: " + ctx.command);
+    report::Table runs{{"variant", "colour in figures", "engine", "contact", "block model", "outcome", "steps (count)", "time step (s)",
+                        "wall time (s)", "note"},
+                       {}};
+    for (const auto& r : result.runs)
+        runs.rows.push_back({r.variant.name, report::variant_colour_name(r.variant.name), r.variant.backend, r.variant.contact_label(), r.variant.model,
+                             validation::to_string(r.outcome), r.steps ? std::to_string(r.steps) : "-",
+                             r.dt > 0 ? number_text(r.dt, 3) : "-", number_text(r.wall_seconds, 3), run_note(r)});
+    d.table(runs);
+
+    write_data(variants, base_index, ctx.max_block_figures, dir);
+    const auto images = draw_figures(variants, base_index, block_names, ctx.max_block_figures, dir, figure_note);
+    auto has = [&](const std::string& p) { return std::find(images.begin(), images.end(), p) != images.end(); };
+
+    // verdicts against the analytic reference
+    if (scene.reference) {
+        d.heading(2, "Verdicts against the analytic reference");
+        d.paragraph("The scene declares an analytic reference (" + scene.reference->kind +
+                    "); every variant is judged as cairn validate judges the shipped cases (docs/validation.md).");
+        report::Table v{{"variant", "verdict", "worst metric"}, {}};
+        for (const auto& r : result.runs) v.rows.push_back({r.variant.name, report::run_verdict(r), report::worst_metric_text(r)});
+        d.table(v);
+        report::Table m{{"variant", "metric", "value", "reference", "tolerance", "verdict"}, {}};
+        for (const auto& r : result.runs)
+            if (r.analysed)
+                for (const auto& x : r.analysis.metrics) {
+                    const std::string unit = x.unit.empty() ? "" : " " + x.unit;
+                    m.rows.push_back({r.variant.name, x.name, number_text(x.value) + unit,
+                                      x.has_reference ? number_text(x.reference) + unit : "-", x.tolerance_text(),
+                                      x.verdict()});
+                }
+        d.table(m);
+        // validate's figure puts the description in its title: only gnuplot-safe characters of it
+        validation::CaseResult safe = result;
+        safe.scene.description = gnuplot_label(safe.scene.description);
+        const auto fig = report::write_figures({safe}, dir);
+        if (!fig.note.empty()) figure_note += fig.note;
+        const auto it = fig.images.find(result.name);
+        if (it != fig.images.end())
+            for (const auto& img : it->second)
+                d.image(img, "Every variant over the analytic curve (black), with its difference below.");
+    }
+
+    // differences
+    d.heading(2, "How the variants are compared");
+    DivergenceThresholds th;
+    std::vector<std::string> how{
+        "Baseline: " + (base.run ? base.run->variant.name + " (" + base.why + ")" : std::string("none (no variant completed)")) + ".",
+        "Position: the centre of mass of each free block. Rotation angle: the angle of the rotation from the "
+        "block's orientation at t = 0 (0 to π rad, about whatever axis). Speed: the magnitude of the "
+        "centre-of-mass velocity.",
+        "Differences are taken at each variant's output times, the baseline interpolated linearly, over the "
+        "time both runs cover. RMS = root mean square over those times.",
+        "First divergence: the first time the distance between the centres of mass exceeds 1 % of the block's "
+        "smallest edge, or the rotation angles differ by more than " + number_text(th.angle) + " rad; \"never\" when "
+        "they stay within that.",
+        "Each variant keeps one colour in every figure.",
+    };
+    d.bullets(how);
+
+    report::Table diff{{"block", "variant", "position RMS (m)", "position diverged at (s)", "largest distance (m)",
+                        "rotation RMS (rad)", "rotation diverged at (s)", "largest rotation difference (rad)",
+                        "speed RMS (m/s)", "compared until (s)"},
+                       {}};
+    report::Table peaks{{"block", "variant", "largest displacement (m)", "largest rotation (rad)", "largest speed (m/s)"}, {}};
+    for (size_t b = 0; b < blocks.size(); ++b) {
+        th.position = 0.01 * blocks[b].size;
+        for (size_t v = 0; v < variants.size(); ++v) {
+            const auto p = block_peaks(variants[v].blocks[b]);
+            peaks.rows.push_back({blocks[b].name, variants[v].run->variant.name, number_text(p.displacement, 4),
+                                  number_text(p.angle, 4), number_text(p.speed, 4)});
+            if (base_index < 0 || int(v) == base_index) continue;
+            const auto x = block_diff(variants[v].blocks[b], variants[size_t(base_index)].blocks[b], th);
+            diff.rows.push_back({blocks[b].name, variants[v].run->variant.name, number_text(x.position_rms, 4),
+                                 or_never(x.position_diverged), number_text(x.position_peak, 4),
+                                 number_text(x.angle_rms, 4), or_never(x.angle_diverged), number_text(x.angle_peak, 4),
+                                 number_text(x.speed_rms, 4), number_text(x.compared_until, 4)});
+        }
+    }
+    write_text_atomic((fs::path(dir) / "differences.csv").string(), table_csv(diff));
+    write_text_atomic((fs::path(dir) / "peaks.csv").string(), table_csv(peaks));
+    // the document shows the blocks that have figures; the CSVs hold every block
+    const size_t shown_rows = size_t(std::max(0, ctx.max_block_figures));
+    const std::string more = blocks.size() > shown_rows ? " The first " + std::to_string(shown_rows) + " of " +
+                                                              std::to_string(blocks.size()) + " free blocks are shown."
+                                                        : std::string();
+    auto first_rows = [&](report::Table t, size_t per_block) {
+        if (t.rows.size() > shown_rows * per_block) t.rows.resize(shown_rows * per_block);
+        return t;
+    };
+    if (base.run) {
+        d.heading(2, "Differences from " + base.run->variant.name);
+        d.paragraph("Per free block and variant (every block in differences.csv)." + more);
+        d.table(first_rows(diff, variants.size() - 1));
+    }
+    d.heading(2, "Peak values");
+    d.paragraph("Per free block and variant: the largest distance from the position at t = 0, rotation angle and "
+                "speed (every block in peaks.csv)." + more);
+    d.table(first_rows(peaks, variants.size()));
+
+    // per block figures
+    d.heading(2, "Blocks");
+    if (!images.empty() && int(blocks.size()) > ctx.max_block_figures)
+        d.paragraph("Figures for the first " + std::to_string(ctx.max_block_figures) + " of " +
+                    std::to_string(blocks.size()) + " free blocks (and their histories in data/); every block is in "
+                    "the runs' trajectory.csv.");
+    if (images.empty()) d.paragraph("No figures: " + (figure_note.empty() ? std::string("nothing to draw") : figure_note));
+    for (size_t b = 0; b < blocks.size() && int(b) < ctx.max_block_figures; ++b) {
+        const std::string stem = "figures/block" + std::to_string(b + 1);
+        if (!has(stem + ".png")) continue;
+        d.heading(3, blocks[b].name);
+        d.image(stem + ".png", blocks[b].name + ": position, rotation angle and speed of every variant");
+        if (has(stem + "_diff.png"))
+            d.image(stem + "_diff.png", blocks[b].name + ": difference of every variant to " + base.run->variant.name);
+    }
+
+    // energies and contacts
+    d.heading(2, "Energy");
+    d.paragraph("At the end of each run, in J. Potential energy is counted from its value at t = 0; work by loads "
+                "is the work of ground motion and other loads; balance error = total energy (kinetic + potential + "
+                "contact + strain + dissipated − work) minus its value at t = 0; the last column is its largest "
+                "magnitude during the run. Histories in data/<variant>_energy.csv.");
+    report::Table en{{"variant", "kinetic (J)", "potential change (J)", "contact (J)", "strain (J)", "dissipated (J)",
+                      "work by loads (J)", "balance error (J)", "largest balance error (J)"},
+                     {}};
+    report::Table co{{"variant", "at t = 0 (count)", "at the end (count)", "largest (count)", "mean (count)"}, {}};
+    for (const auto& v : variants) {
+        en.rows.push_back(energy_row(*v.run));
+        co.rows.push_back(contact_row(*v.run));
+    }
+    d.table(en);
+    write_text_atomic((fs::path(dir) / "energy.csv").string(), table_csv(en));
+    if (has("figures/energy.png"))
+        d.image("figures/energy.png", "Kinetic energy, balance error and contact points of every variant");
+    d.heading(2, "Contacts");
+    d.paragraph("Active contact points: for dem and the matched engines the penalty hitting points in contact, for "
+                "the engines' own rigid contact the engine's contact points; counts are not comparable across "
+                "those two kinds.");
+    d.table(co);
+
+    // what each engine could not represent
+    d.heading(2, "What each engine could not represent");
+    d.paragraph("The rows of the capability matrix (cairn list) that this scene uses and an engine does not "
+                "represent exactly, and the variants an engine refused.");
+    report::Table cap{{"engine", "feature", "support", "what is done instead"}, {}};
+    std::set<std::string> used;
+    for (const auto& r : result.runs) used.insert(r.variant.backend);
+    for (const auto& b : ctx.backends) {
+        if (!used.count(b.name)) continue;
+        for (const auto& f : b.features)
+            if (f.support != Support::exact && applies(f.feature, scene, b.name != "dem")) cap.rows.push_back({b.name, f.feature, to_string(f.support), f.how.empty() ? "-" : f.how});
+    }
+    for (const auto& r : result.runs)
+        if (r.outcome == Outcome::refused)
+            cap.rows.push_back({r.variant.name, "this scene", "refused", run_note(r)});
+    if (cap.rows.empty()) d.paragraph("Every engine represents every feature exactly.");
+    else d.table(cap);
+
+    d.heading(2, "Files");
+    d.bullets({"differences.csv, peaks.csv, energy.csv: the tables above.",
+               "data/<variant>_block<k>.csv: t (s), x, y, z (m), rotation angle (rad), speed (m/s) of free block k (the "
+               "first " + std::to_string(ctx.max_block_figures) + ").",
+               "data/<variant>_block<k>_difference.csv: the same block's difference to the baseline.",
+               "data/<variant>_energy.csv: the energy ledger (J) and contact count over time.",
+               "runs/<scene>/<variant>/: each run's trajectory.csv and run.json, as cairn run writes them."});
+    return d;
+}
+
+}  // namespace cairn::scene_compare

@@ -1,0 +1,175 @@
+// `cairn compare` end to end on a small column, and the command-line conventions (bare cairn,
+// "did you mean" for commands, cases and scenes)
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <fstream>
+#include <sstream>
+
+#include "cairn_process.hpp"
+
+namespace fs = std::filesystem;
+using namespace cairn::test;
+using Catch::Matchers::Contains;
+using Catch::Matchers::StartsWith;
+
+namespace {
+
+/// three 0.4 m cubes stacked on a fixed base, released from rest just touching
+const char* kColumn = R"(description = "Three 0.4 m cubes stacked on a fixed base"
+[run]
+duration = 0.3
+[materials.stone]
+density = 2500
+young = 30e9
+poisson = 0.2
+[contact]
+kn = 3e8
+ks = 3e8
+friction = 0.6
+damping_ratio = 0.2
+[blocks.base]
+size = [1.0, 1.0, 0.2]
+position = [0.0, 0.0, -0.1]
+material = "stone"
+fixed = true
+[blocks.drum1]
+size = [0.4, 0.4, 0.4]
+position = [0.0, 0.0, 0.2]
+material = "stone"
+[blocks.drum2]
+size = [0.4, 0.4, 0.4]
+position = [0.0, 0.0, 0.6]
+material = "stone"
+[blocks.drum3]
+size = [0.4, 0.4, 0.4]
+position = [0.0, 0.0, 1.0]
+material = "stone"
+)";
+
+/// the row of a CSV whose first two fields are `a`,`b`, split
+std::vector<std::string> row(const std::string& csv, const std::string& a, const std::string& b) {
+    std::istringstream in(csv);
+    std::string line;
+    while (std::getline(in, line))
+        if (line.rfind(a + "," + b + ",", 0) == 0) {
+            std::vector<std::string> out;
+            std::istringstream ls(line);
+            std::string f;
+            while (std::getline(ls, f, ',')) out.push_back(f);
+            return out;
+        }
+    return {};
+}
+
+}  // namespace
+
+TEST_CASE("cairn compare runs a column on dem and Bullet and writes the comparison report", "[app][compare]") {
+    const fs::path dir = fresh_dir("compare");
+    {
+        std::ofstream f(dir / "column.toml");
+        f << kColumn;
+    }
+    const fs::path out = dir / "report";
+    const auto r = run_cairn("compare " + (dir / "column.toml").string() + " --backends dem,bullet --jobs 2 --out " +
+                                 out.string(), dir);
+    INFO(r.err);
+    REQUIRE(r.exit_code == 0);
+    for (const char* v : {"dem-rigid", "dem-deformable", "bullet-rigid", "bullet-matched"}) CHECK_THAT(r.out, Contains(v));
+    CHECK(fs::exists(out / "index.html"));
+    const std::string md = read_file(out / "report.md");
+    CHECK_THAT(md, Contains("## Differences from dem-rigid") && Contains("## Energy") && Contains("## Contacts") &&
+                       Contains("## What each engine could not represent") && Contains("(#summary)"));
+    // per-variant histories with units in the header
+    for (const char* v : {"dem-rigid", "bullet-rigid", "bullet-matched"}) {
+        const std::string h = read_file(out / "data" / (std::string(v) + "_block1.csv"));
+        CHECK_THAT(h, StartsWith("t [s],x [m],y [m],z [m],rotation angle [rad],speed [m/s]\n"));
+        CHECK(fs::exists(out / "runs" / "column" / v / "trajectory.csv"));
+    }
+    // the difference table: every number finite
+    const std::string diff = read_file(out / "differences.csv");
+    REQUIRE_THAT(diff, StartsWith("block,variant,position RMS (m),"));
+    for (const char* v : {"dem-deformable", "bullet-rigid", "bullet-matched"})
+        for (const char* b : {"drum1", "drum2", "drum3"}) {
+            const auto cells = row(diff, b, v);
+            INFO(b << " " << v);
+            REQUIRE(cells.size() == 10);
+            for (size_t i = 2; i < cells.size(); ++i)
+                if (cells[i] != "never") CHECK(std::isfinite(std::stod(cells[i])));
+        }
+    // the bottom drum stays at rest on both engines. dem's penalty springs under it carry the three
+    // drums: static penetration d = 3 m g / (kn A) = 3 · 160 kg · 9.81 m/s² / (3e8 N/m³ · 0.16 m²)
+    // = 9.8e-5 m, and released just touching the springs overshoot to at most 2d; Bullet's rigid
+    // contact does not sink. So the centres may differ by at most 2d = 1.96e-4 m, and neither
+    // diverges beyond 1 % of the 0.4 m edge nor turns by 0.01 rad.
+    const auto rest = row(diff, "drum1", "bullet-rigid");
+    REQUIRE(rest.size() == 10);
+    CHECK(std::stod(rest[4]) < 1.96e-4);   // largest distance (m)
+    CHECK(rest[3] == "never");             // position diverged at
+    CHECK(rest[6] == "never");             // rotation diverged at
+}
+
+TEST_CASE("bare cairn prints the usage and the commands, exit 2", "[app][cli]") {
+    const fs::path dir = fresh_dir("bare");
+    const auto r = run_cairn("", dir);
+    CHECK(r.exit_code == 2);
+    CHECK_THAT(r.out, Contains("Usage: cairn") && Contains("compare") && Contains("validate") && Contains("run"));
+}
+
+TEST_CASE("mistyped commands, cases and scene names get a suggestion and exit 2", "[app][cli]") {
+    const fs::path dir = fresh_dir("suggest");
+    auto r = run_cairn("comapre x", dir);
+    CHECK(r.exit_code == 2);
+    CHECK_THAT(r.err, Contains("unknown command 'comapre'") && Contains("did you mean 'compare'"));
+    r = run_cairn("validate --cases rockng --backends dem --out " + (dir / "v").string(), dir);
+    CHECK(r.exit_code == 2);
+    CHECK_THAT(r.err, Contains("rockng") && Contains("did you mean 'rocking'"));
+    CHECK(!fs::exists(dir / "v"));
+    r = run_cairn("compare paper/stabilty --backends dem --out " + (dir / "c").string(), dir);
+    CHECK(r.exit_code == 2);
+    CHECK_THAT(r.err, Contains("did you mean 'paper/stability'"));
+    // nothing close: no suggestion
+    r = run_cairn("zzzzzzzzzz", dir);
+    CHECK(r.exit_code == 2);
+    CHECK_THAT(r.err, !Contains("did you mean"));
+}
+
+TEST_CASE("validate --help lists the cases", "[app][cli]") {
+    const fs::path dir = fresh_dir("validate_help");
+    const auto r = run_cairn("validate --help", dir);
+    CHECK(r.exit_code == 0);
+    CHECK_THAT(r.out, Contains("Usage: cairn validate") && Contains("rocking_slender") && Contains("friction_stick"));
+}
+
+TEST_CASE("cairn compare on a scene with a reference adds the verdicts and the analytic figure", "[app][compare]") {
+    const fs::path dir = fresh_dir("compare_reference");
+    const fs::path out = dir / "report";
+    // 0.2 s holds three periods of the 58.5 ms swing, enough for the stability metrics
+    const auto r = run_cairn("compare paper/stability --backends dem --model rigid --set run.duration=0.2 --out " +
+                                 out.string(), dir);
+    INFO(r.err);
+    REQUIRE(r.exit_code == 0);
+    const std::string md = read_file(out / "report.md");
+    CHECK_THAT(md, Contains("## Verdicts against the analytic reference") && Contains("| dem-rigid | equilibrium penetration |"));
+    CHECK_THAT(md, !Contains("dem-deformable"));   // --model rigid
+    CHECK(fs::exists(out / "figures" / "stability.png"));
+}
+
+TEST_CASE("cairn compare writes the same numbers for one run at a time and for two", "[app][compare]") {
+    const fs::path dir = fresh_dir("compare_jobs");
+    {
+        std::ofstream f(dir / "column.toml");
+        f << kColumn;
+    }
+    // one at a time, dem uses every OpenMP thread; two at a time, one thread each
+    for (const char* jobs : {"1", "2"}) {
+        const auto r = run_cairn("compare " + (dir / "column.toml").string() + " --backends dem --set run.duration=0.1 --jobs " +
+                                     jobs + " -q --out " + (dir / jobs).string(), dir);
+        REQUIRE(r.exit_code == 0);
+    }
+    for (const char* f : {"differences.csv", "peaks.csv", "energy.csv", "data/dem-deformable_block3.csv"}) {
+        INFO(f);
+        CHECK(read_file(dir / "1" / f) == read_file(dir / "2" / f));
+        CHECK(!read_file(dir / "1" / f).empty());
+    }
+}

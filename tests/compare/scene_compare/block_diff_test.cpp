@@ -1,0 +1,74 @@
+// block histories and their differences on samples whose answers are known in closed form
+#include <catch2/catch.hpp>
+
+#include <cmath>
+
+#include "scene_compare/block_diff.hpp"
+#include "scene_compare/variants.hpp"
+
+using namespace cairn;
+using namespace cairn::scene_compare;
+
+namespace {
+
+/// one free block turning about z at `omega` rad/s, moving along x at `v` m/s from x0, every 0.01 s
+std::vector<Sample> spinning(double omega, double v, double x0, int n) {
+    std::vector<Sample> out;
+    for (int i = 0; i < n; ++i) {
+        Sample s;
+        s.t = 0.01 * i;
+        BlockState b;
+        b.position = Vec3(x0 + v * s.t, 0.0, 0.0);
+        b.orientation = Quat(Eigen::AngleAxisd(0.3 + omega * s.t, Vec3::UnitY()));   // 0.3 rad at t = 0
+        b.velocity = Vec3(v, 0.0, 0.0);
+        s.blocks.push_back(b);
+        out.push_back(s);
+    }
+    return out;
+}
+
+}  // namespace
+
+TEST_CASE("rotation angle is measured from the orientation at t = 0", "[scene_compare]") {
+    const auto h = block_history(spinning(0.5, 0.0, 0.0, 101), 0);
+    REQUIRE(h.t.size() == 101);
+    // angle = ω t exactly (the 0.3 rad at t = 0 is not counted); 1e-12 rad: rounding only
+    for (size_t i = 0; i < h.t.size(); ++i) CHECK(h.angle[i] == Approx(0.5 * h.t[i]).margin(1e-12));
+}
+
+TEST_CASE("a constant offset gives that RMS and diverges at once, a linear drift diverges when it passes the threshold",
+          "[scene_compare]") {
+    DivergenceThresholds th;
+    th.position = 0.004;   // m
+    th.angle = 0.01;       // rad
+    const auto base = block_history(spinning(0.0, 0.0, 0.0, 101), 0);
+    // offset of 0.01 m: RMS and peak are 0.01 m, diverged at t = 0
+    const auto off = block_diff(block_history(spinning(0.0, 0.0, 0.01, 101), 0), base, th);
+    CHECK(off.position_rms == Approx(0.01).epsilon(1e-12));
+    CHECK(off.position_peak == Approx(0.01).epsilon(1e-12));
+    CHECK(off.position_diverged == 0.0);
+    CHECK(std::isnan(off.angle_diverged));
+    // drift at 0.1 m/s: distance 0.1 t passes 0.004 m after t = 0.04 s, so first at the sample t = 0.05 s;
+    // RMS over t = 0 … 1 s sampled every 0.01 s is 0.1·sqrt(Σ t²/101)
+    const auto drift = block_diff(block_history(spinning(0.0, 0.1, 0.0, 101), 0), base, th);
+    CHECK(drift.position_diverged == Approx(0.05).margin(1e-12));
+    double s2 = 0.0;
+    for (int i = 0; i <= 100; ++i) s2 += (0.001 * i) * (0.001 * i);
+    CHECK(drift.position_rms == Approx(std::sqrt(s2 / 101.0)).epsilon(1e-12));
+    CHECK(drift.speed_rms == Approx(0.1).epsilon(1e-12));
+    // turning at 0.5 rad/s against a still block: 0.5 t passes 0.01 rad after t = 0.02 s
+    const auto turn = block_diff(block_history(spinning(0.5, 0.0, 0.0, 101), 0), base, th);
+    CHECK(turn.angle_diverged == Approx(0.03).margin(1e-12));
+    CHECK(turn.angle_peak == Approx(0.5).epsilon(1e-12));
+    CHECK(turn.compared_until == Approx(1.0).margin(1e-12));
+}
+
+TEST_CASE("a scene without a reference runs every variant, and --model filters the block models", "[scene_compare]") {
+    Scene s;
+    const auto all = compare_variants(s, {"dem", "bullet"}, "both");
+    std::vector<std::string> names;
+    for (const auto& v : all) names.push_back(v.name);
+    CHECK(names == std::vector<std::string>{"dem-rigid", "dem-deformable", "bullet-rigid", "bullet-matched"});
+    CHECK(compare_variants(s, {"dem", "bullet"}, "deformable").size() == 1);
+    CHECK(compare_variants(s, {"dem", "bullet"}, "rigid").size() == 3);
+}
