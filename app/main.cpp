@@ -27,6 +27,8 @@ int main(int argc, char** argv) {
         ->check(CLI::IsMember({"rigid", "deformable"}));
     run->add_option("--contact", job.contact, "contact mode of the reference engines")
         ->check(CLI::IsMember({"rigid", "matched"}));
+    run->add_flag("--vtk", job.vtk, "also write the run for ParaView into DIR/vtk/ (docs/visualisation.md)");
+    run->add_flag("--replay", job.replay, "also write the interactive 3-D replay DIR/replay.html");
     run->add_flag("--quiet,-q", quiet, "no progress line and no summary");
 
     app.add_subcommand("list", "list the shipped scenes and the backends with their capabilities");

@@ -11,6 +11,7 @@
 #include "output/trajectory_csv.hpp"
 #include "registry.hpp"
 #include "run/runner.hpp"
+#include "run_views.hpp"
 #include "scene/scene_io.hpp"
 #include "scenes.hpp"
 
@@ -90,6 +91,7 @@ JobOutcome execute_run(const RunJob& job) {
     std::unique_ptr<Backend> backend;
     RunRequest request;
     const fs::path dir = job.out_dir;
+    std::unique_ptr<RunViews> views;
     try {
         request.scene_path = resolve_scene(job.scene);
         std::vector<Override> overrides;
@@ -100,6 +102,7 @@ JobOutcome execute_run(const RunJob& job) {
         check_out_dir(dir, job.force);
         if (job.contact != "rigid" && job.contact != "matched")
             throw Error("--contact " + job.contact + ": expected rigid or matched");
+        views = std::make_unique<RunViews>(scene, job.backend, job.vtk, job.replay);
     } catch (const Error& e) {
         o.status = JobStatus::input_error;
         o.message = e.what();
@@ -108,6 +111,7 @@ JobOutcome execute_run(const RunJob& job) {
     request.overrides = job.overrides;
     request.model_override = job.model;
     request.options.contact_mode = job.contact;
+    request.options.record_contacts = job.vtk;
 
     // create the directory now so that a run is never lost for want of it; removed again if the
     // backend refuses the scene
@@ -121,9 +125,12 @@ JobOutcome execute_run(const RunJob& job) {
 
     RunResult result;
     try {
-        result = run_scene(*backend, scene, request.options, progress_line(job));
+        // the 3-D views see every sample with the backend in that state
+        views->open(dir.string());
+        ObservedBackend observed(*backend, views->observer());
+        result = run_scene(views->empty() ? *backend : observed, scene, request.options, progress_line(job));
     } catch (const Error& e) {
-        if (created) fs::remove(dir, ec);
+        if (created) fs::remove_all(dir, ec);
         o.status = JobStatus::refused;
         o.message = e.what();
         return o;
@@ -137,6 +144,7 @@ JobOutcome execute_run(const RunJob& job) {
     });
     // a stale trajectory of the other kind would contradict run.json
     remove_file(dir / (completed ? kPartial : kTrajectory));
+    views->finish();
     write_text_atomic((dir / kRecord).string(),
                       run_record(scene, *backend, result, request).dump(2) + "\n");
 

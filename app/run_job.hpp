@@ -18,6 +18,8 @@ struct RunJob {
     std::string contact = "rigid";        ///< contact mode of the reference engines
     bool progress = false;                ///< show a progress line on stderr
     std::string label;                    ///< name shown in the progress line
+    bool vtk = false;                     ///< write the VTK series for ParaView into out_dir/vtk/
+    bool replay = false;                  ///< write the 3-D replay page out_dir/replay.html
 };
 
 /// How a run ended.
