@@ -33,6 +33,12 @@ int main(int argc, char** argv) {
 
     app.add_subcommand("list", "list the shipped scenes and the backends with their capabilities");
 
+    ReplayOptions replay;
+    auto* replay_cmd = app.add_subcommand("replay", "the 3-D replay of runs side by side, one HTML page (docs/visualisation.md)");
+    replay_cmd->add_option("runs", replay.run_dirs, "directories written by cairn run")->required();
+    replay_cmd->add_option("--out,-o", replay.out, "the page to write (default replay.html)");
+    replay_cmd->add_option("--title", replay.title, "page title");
+
     RunAllOptions all;
     auto* run_all = app.add_subcommand("run-all", "run every shipped scene on every backend");
     run_all->add_option("--out,-o", all.out_dir, "output directory (default out)");
@@ -99,6 +105,7 @@ int main(int argc, char** argv) {
     try {
         if (app.got_subcommand(run)) return run_command(job, quiet);
         if (app.got_subcommand("list")) return list_command();
+        if (app.got_subcommand(replay_cmd)) return replay_command(replay);
         if (app.got_subcommand(run_all)) return run_all_command(all);
         if (study_inertia->parsed()) return study_inertia_command(inertia);
         if (app.got_subcommand(validate)) return validate_command(val);

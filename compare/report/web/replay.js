@@ -68,7 +68,7 @@ function makeView(run, host) {
   run.blocks.forEach((b, i) => {
     const colour = b.fixed ? 0x9a9a9a : palette[i % palette.length];
     const group = new THREE.Group();
-    group.add(new THREE.Mesh(hexGeometry(b.corners), new THREE.MeshStandardMaterial({ color: colour, roughness: 0.8 })));
+    group.add(new THREE.Mesh(hexGeometry(b.corners), new THREE.MeshStandardMaterial({ color: colour, roughness: 0.8, polygonOffset: true, polygonOffsetFactor: 1, polygonOffsetUnits: 1 })));
     group.add(new THREE.LineSegments(hexEdges(b.corners), new THREE.LineBasicMaterial({ color: 0x222222 })));
     scene.add(group);
     if (!b.fixed) free.push(group);
