@@ -77,6 +77,7 @@ public:
     Sample sample() const override;
     std::string failure() const override { return failure_; }
     std::vector<std::string> notes() const override { return notes_; }
+    std::vector<ContactPoint> contact_points() const override;
 
 private:
     void clear();
@@ -298,6 +299,30 @@ Sample BulletBackend::sample() const {
         }
     }
     return s;
+}
+
+// the manifold points in contact; forces are the last step's solver impulses over the step
+std::vector<ContactPoint> BulletBackend::contact_points() const {
+    std::vector<ContactPoint> out;
+    const btDispatcher* d = world_->getDispatcher();
+    for (int m = 0; m < d->getNumManifolds(); ++m) {
+        const btPersistentManifold* pm = const_cast<btDispatcher*>(d)->getManifoldByIndexInternal(m);
+        for (int i = 0; i < pm->getNumContacts(); ++i) {
+            const btManifoldPoint& p = pm->getContactPoint(i);
+            if (p.getDistance() > 0.0) continue;
+            ContactPoint c;
+            c.position = eig(p.m_positionWorldOnB);
+            c.normal = eig(p.m_normalWorldOnB);   // from body 1 towards body 0
+            // the solver pushes body 0 along the normal and the friction directions
+            c.normal_force = (p.m_appliedImpulse / dt_) * c.normal;
+            c.shear_force = (p.m_appliedImpulseLateral1 * eig(p.m_lateralFrictionDir1) +
+                             p.m_appliedImpulseLateral2 * eig(p.m_lateralFrictionDir2)) / dt_;
+            c.block_a = pm->getBody0()->getUserIndex();
+            c.block_b = pm->getBody1()->getUserIndex();
+            out.push_back(c);
+        }
+    }
+    return out;
 }
 
 }  // namespace
