@@ -1,5 +1,6 @@
 #include "report/replay.hpp"
 
+#include <algorithm>
 #include <cstdio>
 
 #include <nlohmann/json.hpp>
@@ -58,6 +59,11 @@ ReplayRun replay_run(const std::string& label, const Scene& scene) {
     return r;
 }
 
+size_t replay_frame_limit(size_t free_blocks) {
+    const size_t by_size = kMaxReplayNumbers / (7 * std::max<size_t>(1, free_blocks));
+    return std::max(kMinReplayFrames, std::min(kMaxReplayFrames, by_size));
+}
+
 void add_frame(ReplayRun& r, const Sample& s) {
     if (r.seen++ % r.stride != 0) return;
     std::vector<double> p;
@@ -68,7 +74,7 @@ void add_frame(ReplayRun& r, const Sample& s) {
     }
     r.t.push_back(s.t);
     r.poses.push_back(std::move(p));
-    if (r.t.size() < kMaxReplayFrames) return;
+    if (r.t.size() < replay_frame_limit(s.blocks.size())) return;
     // too many frames: keep every other one (frame k then holds sample k·stride)
     size_t k = 0;
     for (size_t i = 0; i < r.t.size(); i += 2, ++k) {

@@ -31,6 +31,13 @@ struct ReplayRun {
 /// frames kept per run at most: beyond, every other frame goes and the stride doubles (bounded
 /// memory and page size for any run length)
 constexpr size_t kMaxReplayFrames = 4000;
+/// pose numbers kept per run at most (about 10 MB of page): a scene of many blocks keeps fewer
+/// frames, down to kMinReplayFrames
+constexpr size_t kMaxReplayNumbers = 1000000;
+constexpr size_t kMinReplayFrames = 100;
+
+/// the frame limit of a run with `free_blocks` free blocks
+size_t replay_frame_limit(size_t free_blocks);
 
 /// the blocks of `scene` for a replay labelled `label`, no frames yet
 ReplayRun replay_run(const std::string& label, const Scene& scene);

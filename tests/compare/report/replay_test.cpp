@@ -57,3 +57,9 @@ TEST_CASE("a long run keeps a bounded number of evenly spaced frames") {
     CHECK(run.t.size() == 2501);
     for (size_t k = 0; k < run.t.size(); ++k) CHECK(run.t[k] == 0.001 * double(k * 4));
 }
+
+TEST_CASE("a scene of many blocks keeps fewer frames, within bounds") {
+    CHECK(replay_frame_limit(1) == kMaxReplayFrames);
+    CHECK(replay_frame_limit(300) == kMaxReplayNumbers / (7 * 300));   // 476 frames of a 300-brick wall
+    CHECK(replay_frame_limit(1000000) == kMinReplayFrames);
+}
