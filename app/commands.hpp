@@ -13,6 +13,7 @@ constexpr int kExitOk = 0;
 constexpr int kExitFailure = 1;     ///< an unexpected failure (a bug, a write error)
 constexpr int kExitBadInput = 2;    ///< bad scene, option, backend or output dir; nothing written
 constexpr int kExitUnstable = 3;    ///< the run went unstable; partial outputs written
+constexpr int kExitInterrupted = 130;   ///< stopped by SIGINT/SIGTERM (128 + SIGINT, as shells do)
 
 /// `cairn run`: one scene on one backend
 int run_command(RunJob job, bool quiet);
@@ -87,5 +88,9 @@ int replay_command(const ReplayOptions& options);
 
 /// true when stderr is a terminal (progress lines make sense)
 bool stderr_is_terminal();
+
+/// say on stderr that a command was interrupted and `dir` keeps its previous `what`; returns
+/// kExitInterrupted
+int interrupted_keeping(const std::string& what, const std::string& dir);
 
 }  // namespace cairn

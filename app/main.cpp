@@ -5,6 +5,7 @@
 #include <CLI/CLI.hpp>
 
 #include "commands.hpp"
+#include "run/stop.hpp"
 
 int main(int argc, char** argv) {
     using namespace cairn;
@@ -102,6 +103,9 @@ int main(int argc, char** argv) {
         return code == 0 ? kExitOk : kExitBadInput;
     }
 
+    // Ctrl-C and SIGTERM stop runs at their next step boundary (the partial result is kept and
+    // marked); a second one ends the process at once
+    install_stop_handlers();
     try {
         if (app.got_subcommand(run)) return run_command(job, quiet);
         if (app.got_subcommand("list")) return list_command();

@@ -6,6 +6,7 @@
 #include "commands.hpp"
 #include "error.hpp"
 #include "registry.hpp"
+#include "run/stop.hpp"
 #include "scenes.hpp"
 
 namespace cairn {
@@ -72,6 +73,7 @@ int run_all_command(const RunAllOptions& options) {
     const bool progress = !options.quiet && stderr_is_terminal();
     for (const auto& s : scenes) {
         for (const auto& b : backends) {
+            if (stop_requested()) break;   // interrupted: no new run; finished ones are in place
             RunJob job;
             job.scene = s.path;
             job.backend = b;
@@ -90,6 +92,10 @@ int run_all_command(const RunAllOptions& options) {
                         break;
                     case JobStatus::unstable:
                         row.status = "unstable";
+                        row.ran = true;
+                        break;
+                    case JobStatus::interrupted:
+                        row.status = "interrupted";
                         row.ran = true;
                         break;
                     case JobStatus::refused:
@@ -113,6 +119,10 @@ int run_all_command(const RunAllOptions& options) {
     print_table(rows);
     const auto where = std::filesystem::path(options.out_dir) / "<scene>" / "<backend>";
     std::printf("\noutputs in %s\n", where.string().c_str());
+    if (stop_requested()) {
+        std::cerr << "interrupted: runs not started are missing from the table\n";
+        return kExitInterrupted;
+    }
     return failed ? kExitFailure : kExitOk;
 }
 

@@ -8,6 +8,11 @@ namespace cairn {
 
 bool stderr_is_terminal() { return isatty(STDERR_FILENO) != 0; }
 
+int interrupted_keeping(const std::string& what, const std::string& dir) {
+    std::cerr << "interrupted: no new " << what << " written; " << dir << " keeps the previous one\n";
+    return kExitInterrupted;
+}
+
 int run_command(RunJob job, bool quiet) {
     job.progress = !quiet && stderr_is_terminal();
     job.label = job.scene + " on " + job.backend;
@@ -22,6 +27,10 @@ int run_command(RunJob job, bool quiet) {
                       << "partial trajectory kept in " << job.out_dir << "/trajectory.partial.csv\n";
             if (!quiet) std::cout << summary_line(o) << "\n";
             return kExitUnstable;
+        case JobStatus::interrupted:
+            std::cerr << "interrupted: " << o.message << "\n"
+                      << "partial trajectory kept in " << job.out_dir << "/trajectory.partial.csv\n";
+            return kExitInterrupted;
         case JobStatus::completed:
             if (!quiet) std::cout << summary_line(o) << " -> " << job.out_dir << "\n";
             return kExitOk;

@@ -8,6 +8,7 @@
 #include "error.hpp"
 #include "output/atomic_write.hpp"
 #include "output/run_record.hpp"
+#include "output/staged_dir.hpp"
 #include "output/trajectory_csv.hpp"
 #include "registry.hpp"
 #include "run/runner.hpp"
@@ -23,6 +24,7 @@ const char* to_string(JobStatus s) {
     switch (s) {
         case JobStatus::completed: return "completed";
         case JobStatus::unstable: return "unstable";
+        case JobStatus::interrupted: return "interrupted";
         case JobStatus::input_error: return "error";
         case JobStatus::refused: return "refused";
     }
@@ -41,21 +43,10 @@ std::string summary_line(const JobOutcome& o) {
 
 namespace {
 
-/// the output files a run writes; with --force these are what an earlier run may have left
+/// the output files a run writes
 constexpr const char* kTrajectory = "trajectory.csv";
 constexpr const char* kPartial = "trajectory.partial.csv";
 constexpr const char* kRecord = "run.json";
-
-/// throw unless `dir` may receive outputs: absent, empty, or `force`
-void check_out_dir(const fs::path& dir, bool force) {
-    std::error_code ec;
-    if (!fs::exists(dir, ec)) return;
-    if (!fs::is_directory(dir, ec))
-        throw Error("output path " + dir.string() + " exists and is not a directory");
-    if (!force && !fs::is_empty(dir, ec))
-        throw Error("output directory " + dir.string() +
-                    " is not empty; use --force to replace an earlier run's outputs");
-}
 
 /// set every free block's model from --model
 void apply_model(Scene& scene, const std::string& model) {
@@ -77,20 +68,16 @@ ProgressFn progress_line(const RunJob& job) {
     };
 }
 
-void remove_file(const fs::path& p) {
-    std::error_code ec;
-    fs::remove(p, ec);
-}
-
 }  // namespace
 
 JobOutcome execute_run(const RunJob& job) {
     JobOutcome o;
-    // everything that can be wrong with the input is found before anything is written
+    // everything that can be wrong with the input, and an output directory that cannot be
+    // written, is found before the run
     Scene scene;
     std::unique_ptr<Backend> backend;
     RunRequest request;
-    const fs::path dir = job.out_dir;
+    std::unique_ptr<StagedDir> out;
     std::unique_ptr<RunViews> views;
     try {
         request.scene_path = resolve_scene(job.scene);
@@ -99,10 +86,12 @@ JobOutcome execute_run(const RunJob& job) {
         scene = load_scene(request.scene_path, overrides);
         apply_model(scene, job.model);
         backend = make_backend(job.backend);
-        check_out_dir(dir, job.force);
         if (job.contact != "rigid" && job.contact != "matched")
             throw Error("--contact " + job.contact + ": expected rigid or matched");
-        views = std::make_unique<RunViews>(scene, job.backend, job.vtk, job.replay);
+        views = std::make_unique<RunViews>(scene, *backend, job.backend, job.vtk, job.replay);
+        out = std::make_unique<StagedDir>(job.out_dir, job.force);
+        // --force replaces a run's own files; anything else in DIR comes along (hard links)
+        out->carry_over({kTrajectory, kPartial, kRecord, kVtkDir, kReplayPage}, StagedDir::Carry::link);
     } catch (const Error& e) {
         o.status = JobStatus::input_error;
         o.message = e.what();
@@ -113,51 +102,40 @@ JobOutcome execute_run(const RunJob& job) {
     request.options.contact_mode = job.contact;
     request.options.record_contacts = job.vtk;
 
-    // create the directory now so that a run is never lost for want of it; removed again if the
-    // backend refuses the scene
-    std::error_code ec;
-    const bool created = !fs::exists(dir, ec);
-    fs::create_directories(dir, ec);
-    if (ec) {
-        o.message = "cannot create output directory " + dir.string() + ": " + ec.message();
-        return o;
-    }
-
+    // the trajectory streams into the staging directory as the run goes; the set (trajectory and
+    // run.json, written last) replaces DIR only when complete
+    const fs::path dir = out->path();
+    TrajectoryCsvFile csv((dir / kTrajectory).string());
     RunResult result;
     try {
-        // the 3-D views see every sample with the backend in that state
+        // the 3-D views (--vtk, --replay) take the samples beside the trajectory
         views->open(dir.string());
-        ObservedBackend observed(*backend, views->observer());
-        result = run_scene(views->empty() ? *backend : observed, scene, request.options, progress_line(job));
+        TeeSink sinks({&csv, views.get()});
+        result = run_scene(*backend, scene, request.options, sinks, progress_line(job));
     } catch (const Error& e) {
-        if (created) fs::remove_all(dir, ec);
-        o.status = JobStatus::refused;
+        o.status = JobStatus::refused;   // nothing written: the staging directory goes
         o.message = e.what();
         return o;
     }
     if (job.progress) std::fprintf(stderr, "\r%*s\r", int(job.label.size()) + 8, "");
 
     const bool completed = result.status == RunStatus::completed;
-    const fs::path csv = dir / (completed ? kTrajectory : kPartial);
-    write_file_atomic(csv.string(), [&](std::ostream& out) {
-        write_trajectory_csv(out, scene, result.samples);
-    });
-    // a stale trajectory of the other kind would contradict run.json
-    remove_file(dir / (completed ? kPartial : kTrajectory));
-    views->finish();
-    write_text_atomic((dir / kRecord).string(),
-                      run_record(scene, *backend, result, request).dump(2) + "\n");
+    if (!completed) fs::rename(dir / kTrajectory, dir / kPartial);
+    write_text_atomic((dir / kRecord).string(), run_record_text(scene, *backend, result, request));
+    out->commit();
 
-    o.status = completed ? JobStatus::completed : JobStatus::unstable;
+    switch (result.status) {
+        case RunStatus::completed: o.status = JobStatus::completed; break;
+        case RunStatus::unstable: o.status = JobStatus::unstable; break;
+        case RunStatus::interrupted: o.status = JobStatus::interrupted; break;
+    }
     o.message = result.message;
     o.steps = result.steps;
     o.dt = result.dt;
     o.wall_seconds = result.wall_seconds;
     o.energy_drift = result.energy_drift;
     o.max_balance_error = result.max_balance_error;
-    if (!result.samples.empty())
-        o.final_balance_error =
-            result.samples.back().energy.total() - result.samples.front().energy.total();
+    if (result.sample_count > 0) o.final_balance_error = result.final_energy.total() - result.initial_total;
     return o;
 }
 

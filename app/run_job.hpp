@@ -12,7 +12,7 @@ struct RunJob {
     std::string scene;                    ///< scene file path or shipped scene name
     std::string backend;                  ///< registry name
     std::string out_dir;                  ///< output directory
-    bool force = false;                   ///< write into a non-empty directory, replacing old outputs
+    bool force = false;                   ///< replace a non-empty directory (its old content goes)
     std::vector<std::string> overrides;   ///< "key=value" scene overrides
     std::string model;                    ///< "rigid"/"deformable" for every free block; empty = scene's
     std::string contact = "rigid";        ///< contact mode of the reference engines
@@ -26,6 +26,7 @@ struct RunJob {
 enum class JobStatus {
     completed,     ///< outputs written
     unstable,      ///< partial outputs written, status "unstable"
+    interrupted,   ///< stopped by SIGINT/SIGTERM: partial outputs written, status "interrupted"
     input_error,   ///< bad scene, override, backend name or output dir: nothing written
     refused,       ///< the backend cannot build this scene: nothing written
 };
@@ -42,11 +43,12 @@ struct JobOutcome {
     double max_balance_error = 0.0;   ///< largest balance error relative to the energy scale
 };
 
-/// run `job`; cairn::Error from input or the backend becomes input_error/refused, other exceptions
-/// propagate
+/// run `job`: the outputs appear in job.out_dir as a set (output/staged_dir.hpp) or not at all;
+/// cairn::Error from input or the backend becomes input_error/refused, other exceptions (a write
+/// error) propagate and leave job.out_dir as it was
 JobOutcome execute_run(const RunJob& job);
 
-/// "completed", "unstable", "error", "refused"
+/// "completed", "unstable", "interrupted", "error", "refused"
 const char* to_string(JobStatus s);
 
 /// one-line summary of an outcome: steps, dt, wall time, final balance error

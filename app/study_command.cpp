@@ -1,4 +1,4 @@
-// `cairn study inertia`: the mesh-inertia study (issue 6, docs/inertia.md)
+// `cairn study inertia`: the mesh-inertia study (docs/inertia.md)
 #include <chrono>
 #include <filesystem>
 #include <iostream>
@@ -8,7 +8,9 @@
 #include "dem/deformable/deformable_body.hpp"
 #include "dem/mesh.hpp"
 #include "error.hpp"
+#include "output/staged_dir.hpp"
 #include "registry.hpp"
+#include "run/stop.hpp"
 #include "scenes.hpp"
 #include "study/inertia_study.hpp"
 #include "study/study_report.hpp"
@@ -31,10 +33,15 @@ Mat3 dem_inertia(const Scene& scene, int b) {
 }  // namespace
 
 int study_inertia_command(const StudyInertiaOptions& o) {
-    namespace fs = std::filesystem;
-    std::error_code ec;
-    fs::create_directories(o.out_dir, ec);
-    if (ec) throw Error(o.out_dir + ": cannot create the output directory: " + ec.message());
+    // built beside the old study and swapped in whole once complete
+    std::unique_ptr<StagedDir> staged;
+    try {
+        staged = std::make_unique<StagedDir>(o.out_dir, true);
+        staged->carry_over({"inertia.csv", "inertia.md", "inertia.html", "figures"}, StagedDir::Carry::copy);
+    } catch (const Error& e) {
+        std::cerr << "error: " << e.what() << "\n";
+        return kExitBadInput;
+    }
     study::StudyOptions options;
     if (!o.ns.empty()) options.ns = o.ns;
     options.repeats = o.repeats;
@@ -44,7 +51,11 @@ int study_inertia_command(const StudyInertiaOptions& o) {
     const auto points = study::run_study(study::default_cases(scenarios_dir()), options,
                                          [] { return make_backend("dem"); }, dem_inertia);
     const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    study::write_inertia_study(o.out_dir, points, wall);
+    if (stop_requested()) {
+        return interrupted_keeping("study", o.out_dir);
+    }
+    study::write_inertia_study(staged->path().string(), points, wall);
+    staged->commit();
     std::cout << "inertia study: " << points.size() << " points in " << wall << " s; wrote " << o.out_dir
               << "/inertia.csv, inertia.md, inertia.html\n";
     for (const auto& p : points)

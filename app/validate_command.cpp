@@ -8,7 +8,9 @@
 #include "commands.hpp"
 #include "error.hpp"
 #include "output/atomic_write.hpp"
+#include "output/staged_dir.hpp"
 #include "registry.hpp"
+#include "run/stop.hpp"
 #include "report/figures.hpp"
 #include "bench/bench_report.hpp"
 #include "report/validation_report.hpp"
@@ -79,22 +81,26 @@ int validate_command(const ValidateOptions& options) {
         return kExitBadInput;
     }
 
-    // validate owns these outputs under DIR and replaces them; nothing else in DIR is touched
-    const fs::path dir = options.out_dir;
-    std::error_code ec;
-    if (fs::exists(dir, ec) && !fs::is_directory(dir, ec)) {
-        std::cerr << "error: output path " << dir.string() << " exists and is not a directory\n";
+    // the new report is built beside the old one and swapped in whole once complete: killed or
+    // interrupted, DIR keeps the previous complete report. Validate owns these entries of DIR; the
+    // rest (the study/ and bench/ written there by other commands) is carried over.
+    std::unique_ptr<StagedDir> staged;
+    try {
+        staged = std::make_unique<StagedDir>(options.out_dir, true);
+        staged->carry_over({"runs", "figures", "summary.csv", "report.md", "index.html"}, StagedDir::Carry::copy);
+    } catch (const Error& e) {
+        std::cerr << "error: " << e.what() << "\n";
         return kExitBadInput;
     }
-    fs::remove_all(dir / "runs", ec);
-    fs::remove_all(dir / "figures", ec);
-    fs::create_directories(dir, ec);
-    if (ec) {
-        std::cerr << "error: cannot create " << dir.string() << ": " << ec.message() << "\n";
-        return kExitFailure;
-    }
+    const fs::path dir = staged->path();
+    plan.out_dir = dir.string();
+    plan.final_dir = options.out_dir;
+    std::error_code ec;
 
     validation::run_plan(plan, [](const std::string& name) { return make_backend(name); });
+    if (stop_requested()) {
+        return interrupted_keeping("report", options.out_dir);
+    }
 
     report::ReportContext ctx;
     for (const auto& b : available_backends())
@@ -105,25 +111,37 @@ int validate_command(const ValidateOptions& options) {
     const auto figures = report::write_figures(plan.cases, dir.string());
     ctx.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     auto doc = report::build_report(plan.cases, figures, ctx);
-    // the inertia study and the benches, when their outputs sit beside the validation
-    const fs::path study_dir = options.study_dir.empty() ? dir / "study" : fs::path(options.study_dir);
-    const fs::path bench_dir = options.bench_dir.empty() ? dir / "bench" : fs::path(options.bench_dir);
-    const std::string study_prefix = fs::relative(study_dir, dir, ec).generic_string() + "/";
+    // the inertia study and the benches, when their outputs sit beside the validation; links in the
+    // report are relative to DIR, and a study or bench inside DIR is read from (and its figures
+    // drawn into) the staging copy that replaces DIR
+    const fs::path final_dir = staged->final_path();
+    auto where = [&](const std::string& given, const char* name) {
+        const fs::path shown = given.empty() ? final_dir / name : fs::absolute(given).lexically_normal();
+        const fs::path inside = shown.lexically_relative(final_dir);
+        const bool in_dir = !inside.empty() && *inside.begin() != "..";
+        return std::make_pair(in_dir ? dir / inside : shown, fs::relative(shown, final_dir, ec).generic_string() + "/");
+    };
+    const auto [study_dir, study_prefix] = where(options.study_dir, "study");
+    const auto [bench_dir, bench_prefix] = where(options.bench_dir, "bench");
     if (!study::add_inertia_report_section(doc, study_dir.string(), study_prefix) && !options.study_dir.empty())
-        std::cerr << "note: no inertia study in " << study_dir.string() << " (run cairn study inertia --out there)\n";
+        std::cerr << "note: no inertia study in " << options.study_dir << " (run cairn study inertia --out there)\n";
     const bool has_bench = fs::exists(bench_dir / "trade.csv") || fs::exists(bench_dir / "stability.csv") ||
                            fs::exists(bench_dir / "wall.csv");
     if (has_bench)
-        report::append(doc, bench::bench_document(bench_dir.string()), fs::relative(bench_dir, dir, ec).generic_string() + "/");
+        report::append(doc, bench::bench_document(bench_dir.string()), bench_prefix);
     else if (!options.bench_dir.empty())
-        std::cerr << "note: no bench results in " << bench_dir.string() << " (run cairn bench all --out there)\n";
+        std::cerr << "note: no bench results in " << options.bench_dir << " (run cairn bench all --out there)\n";
     write_text_atomic((dir / "summary.csv").string(), report::summary_csv(plan.cases));
     write_text_atomic((dir / "report.md").string(), report::to_markdown(doc));
     write_text_atomic((dir / "index.html").string(), report::to_html(doc));
+    if (stop_requested()) {
+        return interrupted_keeping("report", options.out_dir);
+    }
+    staged->commit();
 
     std::cout << report::verdict_text(plan.cases);
     if (!figures.note.empty()) std::cout << "figures: " << figures.note << "\n";
-    std::printf("\nreport: %s (and report.md, summary.csv); %.1f s wall\n", (dir / "index.html").string().c_str(),
+    std::printf("\nreport: %s (and report.md, summary.csv); %.1f s wall\n", (fs::path(options.out_dir) / "index.html").string().c_str(),
                 ctx.wall_seconds);
     return kExitOk;
 }

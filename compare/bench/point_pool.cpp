@@ -7,6 +7,7 @@
 #include <thread>
 
 #include "error.hpp"
+#include "run/stop.hpp"
 
 namespace cairn::bench {
 
@@ -32,7 +33,9 @@ void run_pool(const std::vector<PoolJob>& jobs, const PoolOptions& options,
             RunResult res = run_scene(*backend, *job.scene, ro);
             walls.push_back(res.wall_seconds);
             if (k == 0) {
-                r.outcome = res.status == RunStatus::completed ? "completed" : "unstable";
+                r.outcome = res.status == RunStatus::completed     ? "completed"
+                            : res.status == RunStatus::interrupted ? "interrupted"
+                                                                   : "unstable";
                 r.message = res.message;
                 r.result = std::move(res);
                 if (r.outcome != "completed") break;   // a blow-up's wall time means nothing
@@ -41,7 +44,7 @@ void run_pool(const std::vector<PoolJob>& jobs, const PoolOptions& options,
         r.median_wall = median(walls);
     };
     auto worker = [&] {
-        for (size_t j; (j = next++) < jobs.size();) {
+        for (size_t j; !stop_requested() && (j = next++) < jobs.size();) {
             const PoolJob& job = jobs[j];
             PoolResult r;
             try {

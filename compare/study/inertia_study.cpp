@@ -11,6 +11,7 @@
 #include "cases/case_util.hpp"
 #include "error.hpp"
 #include "run/runner.hpp"
+#include "run/stop.hpp"
 #include "scene/scene_io.hpp"
 #include "study/impact_measure.hpp"
 #include "study/mesh_inertia.hpp"
@@ -164,7 +165,7 @@ std::vector<StudyPoint> run_study(const std::vector<StudyCase>& cases, const Stu
     std::mutex mutex;
     size_t done = 0;
     auto worker = [&] {
-        for (size_t k; (k = next++) < jobs.size();) {
+        for (size_t k; !stop_requested() && (k = next++) < jobs.size();) {
             const Job job = jobs[k];
             StudyPoint& p = points[job.point];
             {   // a repeat only for runs under kRepeatBelow s: a long run's time is steady enough

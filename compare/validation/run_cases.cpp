@@ -13,6 +13,7 @@
 #include "output/run_record.hpp"
 #include "output/trajectory_csv.hpp"
 #include "run/runner.hpp"
+#include "run/stop.hpp"
 
 namespace fs = std::filesystem;
 
@@ -31,8 +32,8 @@ const char* to_string(Outcome o) {
 namespace {
 
 /// one run: build, step, write its files, analyse; never throws
-void execute(CaseRun& run, const Scene& case_scene, const std::string& scene_path, const RunPlan& plan,
-             const BackendFactory& make) {
+void execute(CaseRun& run, const fs::path& dir, const Scene& case_scene, const std::string& scene_path,
+             const RunPlan& plan, const BackendFactory& make) {
     Scene scene = case_scene;
     const BlockModel model = run.variant.model == "deformable" ? BlockModel::deformable : BlockModel::rigid;
     for (auto& b : scene.blocks)
@@ -44,10 +45,18 @@ void execute(CaseRun& run, const Scene& case_scene, const std::string& scene_pat
     request.options.contact_mode = run.variant.contact_mode;
     std::unique_ptr<Backend> backend;
     RunResult result;
+    // the same files as `cairn run`, through the same streaming writer; the samples are kept too,
+    // for the analysis
+    CollectingSink collect;
+    TrajectoryCsvFile csv((dir / "trajectory.csv").string());
+    TeeSink sink({&collect, &csv});
     try {
         backend = make(run.variant.backend);
-        result = run_scene(*backend, scene, request.options);
+        fs::create_directories(dir);
+        result = run_scene(*backend, scene, request.options, sink);
     } catch (const Error& e) {
+        std::error_code ec;
+        fs::remove(dir, ec);   // refused before the first sample: the directory is still empty
         run.outcome = Outcome::refused;
         run.message = e.what();
         return;
@@ -58,20 +67,14 @@ void execute(CaseRun& run, const Scene& case_scene, const std::string& scene_pat
     }
     run.outcome = result.status == RunStatus::completed ? Outcome::completed : Outcome::unstable;
     run.message = result.message;
-    run.samples = std::move(result.samples);
+    run.samples = std::move(collect.samples);
     run.wall_seconds = result.wall_seconds;
     run.dt = result.dt;
     run.steps = result.steps;
     try {
-        // the same files as `cairn run`: a partial trajectory keeps its own name
-        const fs::path dir = run.out_dir;
-        fs::create_directories(dir);
-        const bool done = run.outcome == Outcome::completed;
-        fs::remove(dir / (done ? "trajectory.partial.csv" : "trajectory.csv"));
-        write_file_atomic((dir / (done ? "trajectory.csv" : "trajectory.partial.csv")).string(),
-                          [&](std::ostream& out) { write_trajectory_csv(out, scene, run.samples); });
-        result.samples = run.samples;
-        write_text_atomic((dir / "run.json").string(), run_record(scene, *backend, result, request).dump(2) + "\n");
+        // a partial trajectory keeps its own name
+        if (run.outcome != Outcome::completed) fs::rename(dir / "trajectory.csv", dir / "trajectory.partial.csv");
+        write_text_atomic((dir / "run.json").string(), run_record_text(scene, *backend, result, request));
     } catch (const std::exception& e) {
         run.outcome = Outcome::failed;
         run.message = std::string("cannot write outputs: ") + e.what();
@@ -121,13 +124,18 @@ void diff_runs(CaseResult& c) {
 }  // namespace
 
 void run_plan(RunPlan& plan, const BackendFactory& make) {
-    struct Job { size_t c, r; };
+    struct Job {
+        size_t c, r;
+        fs::path dir;   ///< where the run's files are written
+    };
     std::vector<Job> jobs;
+    const std::string named = plan.final_dir.empty() ? plan.out_dir : plan.final_dir;
     for (size_t c = 0; c < plan.cases.size(); ++c)
         for (size_t r = 0; r < plan.cases[c].runs.size(); ++r) {
             CaseRun& run = plan.cases[c].runs[r];
-            run.out_dir = (fs::path(plan.out_dir) / "runs" / plan.cases[c].name / run.variant.name).string();
-            jobs.push_back({c, r});
+            const fs::path sub = fs::path("runs") / plan.cases[c].name / run.variant.name;
+            run.out_dir = (fs::path(named) / sub).string();
+            jobs.push_back({c, r, fs::path(plan.out_dir) / sub});
         }
     std::atomic<size_t> next{0};
     std::atomic<size_t> done{0};
@@ -135,15 +143,15 @@ void run_plan(RunPlan& plan, const BackendFactory& make) {
     std::map<std::string, std::mutex> serial;
     for (const auto& b : plan.serial_backends) serial[b];
     auto worker = [&] {
-        for (size_t j; (j = next++) < jobs.size();) {
+        for (size_t j; !stop_requested() && (j = next++) < jobs.size();) {
             CaseResult& c = plan.cases[jobs[j].c];
             CaseRun& run = c.runs[jobs[j].r];
             auto it = serial.find(run.variant.backend);
             if (it != serial.end()) {
                 std::lock_guard<std::mutex> lock(it->second);
-                execute(run, c.scene, plan.scene_paths[jobs[j].c], plan, make);
+                execute(run, jobs[j].dir, c.scene, plan.scene_paths[jobs[j].c], plan, make);
             } else {
-                execute(run, c.scene, plan.scene_paths[jobs[j].c], plan, make);
+                execute(run, jobs[j].dir, c.scene, plan.scene_paths[jobs[j].c], plan, make);
             }
             size_t n = ++done;
             if (!plan.quiet) {

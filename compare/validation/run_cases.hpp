@@ -48,7 +48,10 @@ struct CaseResult {
 /// What to run.
 struct RunPlan {
     std::vector<CaseResult> cases;   ///< scene loaded, runs listed (case_name and variant set)
-    std::string out_dir;             ///< runs go to out_dir/runs/<case>/<variant>/
+    std::string out_dir;             ///< runs are written to out_dir/runs/<case>/<variant>/
+    /// where out_dir is moved once the report is complete (a staging directory swapped into
+    /// place); the runs are named by it in CaseRun::out_dir; empty = out_dir
+    std::string final_dir;
     std::vector<std::string> overrides;   ///< "key=value" applied to every scene (recorded in run.json)
     std::vector<std::string> scene_paths; ///< per case, the scene file (for run.json)
     int jobs = 2;                    ///< threads
@@ -59,7 +62,7 @@ struct RunPlan {
 };
 
 /// run every listed run of the plan, then analyse each against its case and diff the variants;
-/// fills the CaseRun entries in place
+/// fills the CaseRun entries in place; once a stop is requested (run/stop.hpp) no new run starts
 void run_plan(RunPlan& plan, const BackendFactory& make);
 
 }  // namespace cairn::validation

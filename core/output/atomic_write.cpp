@@ -5,6 +5,7 @@
 #include <fstream>
 
 #include "error.hpp"
+#include "output/durable.hpp"
 
 namespace cairn {
 
@@ -28,11 +29,19 @@ void write_file_atomic(const std::string& path, const std::function<void(std::os
         }
     }
     std::error_code ec;
+    try {
+        sync_file(tmp);   // the content is on disk before the name points at it
+    } catch (...) {
+        std::remove(tmp.c_str());
+        throw;
+    }
     std::filesystem::rename(tmp, path, ec);
     if (ec) {
         std::remove(tmp.c_str());
         throw Error("cannot rename " + tmp + " to " + path + ": " + ec.message());
     }
+    const auto parent = std::filesystem::path(path).parent_path();
+    sync_dir(parent.empty() ? std::string(".") : parent.string());
 }
 
 void write_text_atomic(const std::string& path, const std::string& text) {

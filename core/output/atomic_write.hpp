@@ -1,6 +1,7 @@
 #pragma once
 /// Writing a result file so that a crash or an error never leaves a half-written file over an old
-/// one: the content goes to "<path>.tmp", which is renamed over <path> only once complete.
+/// one: the content goes to "<path>.tmp", which is fsynced and renamed over <path> only once
+/// complete, and the directory is fsynced after the rename.
 
 #include <functional>
 #include <ostream>

@@ -8,6 +8,7 @@ const char* to_string(RunStatus s) {
     switch (s) {
         case RunStatus::completed: return "completed";
         case RunStatus::unstable: return "unstable";
+        case RunStatus::interrupted: return "interrupted";
     }
     return "?";
 }
@@ -39,23 +40,31 @@ nlohmann::json run_record(const Scene& scene, const Backend& backend, const RunR
     j["critical_step"] = result.critical_step;
     j["steps"] = result.steps;
     j["output_every"] = result.output_every;
-    j["samples"] = result.samples.size();
+    j["samples"] = result.sample_count;
     j["wall_seconds"] = result.wall_seconds;
     j["status"] = to_string(result.status);
     j["message"] = result.message;
     j["partial"] = result.status != RunStatus::completed;
     j["energy_drift"] = result.energy_drift;
     j["max_balance_error"] = result.max_balance_error;
-    if (!result.samples.empty()) {
-        const Sample& last = result.samples.back();
-        j["final_time"] = last.t;
-        j["final_energies"] = energies_json(last.energy, result.samples.front().energy.total());
+    if (result.sample_count > 0) {
+        j["final_time"] = result.final_time;
+        j["final_energies"] = energies_json(result.final_energy, result.initial_total);
     } else {
         j["final_time"] = nullptr;
         j["final_energies"] = nullptr;
     }
     j["notes"] = backend.notes();
     return j;
+}
+
+std::string run_record_text(const Scene& scene, const Backend& backend, const RunResult& result,
+                            const RunRequest& request) {
+    // text that is not UTF-8 (a scene path with a Latin-1 byte) is kept with U+FFFD in its place
+    // rather than throwing after the trajectory is written
+    return run_record(scene, backend, result, request)
+               .dump(2, ' ', false, nlohmann::json::error_handler_t::replace) +
+           "\n";
 }
 
 }  // namespace cairn

@@ -24,7 +24,12 @@ struct RunRequest {
 nlohmann::json run_record(const Scene& scene, const Backend& backend, const RunResult& result,
                           const RunRequest& request);
 
-/// "completed" or "unstable"
+/// run_record() as the text of run.json (indented, ending in a newline); never throws on text
+/// that is not UTF-8 (U+FFFD takes the place of each bad byte)
+std::string run_record_text(const Scene& scene, const Backend& backend, const RunResult& result,
+                            const RunRequest& request);
+
+/// "completed", "unstable" or "interrupted"
 const char* to_string(RunStatus s);
 
 }  // namespace cairn

@@ -3,6 +3,8 @@
 #include <cstdio>
 #include <stdexcept>
 
+#include "output/durable.hpp"
+
 namespace cairn {
 
 std::vector<std::string> trajectory_columns(const Scene& scene) {
@@ -30,36 +32,75 @@ void put(std::string& line, double x) {
 
 }  // namespace
 
-void write_trajectory_csv(std::ostream& out, const Scene& scene, const std::vector<Sample>& samples) {
+TrajectoryCsvWriter::TrajectoryCsvWriter(std::ostream& out, const Scene& scene)
+    : out_(out), probes_(scene.probes.size()) {
+    for (const auto& b : scene.blocks) free_blocks_ += b.fixed ? 0 : 1;
     const auto cols = trajectory_columns(scene);
-    std::string line;
-    for (size_t i = 0; i < cols.size(); ++i) line += (i ? "," : "") + cols[i];
-    out << line << '\n';
-    const double total0 = samples.empty() ? 0.0 : samples.front().energy.total();
-    size_t free_blocks = 0;
-    for (const auto& b : scene.blocks) free_blocks += b.fixed ? 0 : 1;
-    for (const auto& s : samples) {
-        // a backend bug, not bad input: rows must match the header
-        if (s.probes.size() != scene.probes.size() || s.blocks.size() != free_blocks)
-            throw std::logic_error("trajectory sample at t = " + std::to_string(s.t) +
-                                   " does not match the scene's probes and free blocks");
-        char buf[40];
-        std::snprintf(buf, sizeof buf, "%.17g", s.t);
-        line = buf;
-        for (const auto& p : s.probes)
-            for (int k = 0; k < 3; ++k) put(line, p[k]);
-        for (const auto& b : s.blocks) {
-            for (int k = 0; k < 3; ++k) put(line, b.position[k]);
-            for (double q : {b.orientation.w(), b.orientation.x(), b.orientation.y(), b.orientation.z()})
-                put(line, q);
-        }
-        const Energies& e = s.energy;
-        for (double x : {e.kinetic, e.potential, e.contact, e.strain, e.dissipated, e.external,
-                         e.total() - total0})
-            put(line, x);
-        line += "," + std::to_string(s.contacts);
-        out << line << '\n';
+    for (size_t i = 0; i < cols.size(); ++i) line_ += (i ? "," : "") + cols[i];
+    out_ << line_ << '\n';
+}
+
+void TrajectoryCsvWriter::row(const Sample& s) {
+    // a backend bug, not bad input: rows must match the header
+    if (s.probes.size() != probes_ || s.blocks.size() != free_blocks_)
+        throw std::logic_error("trajectory sample at t = " + std::to_string(s.t) +
+                               " does not match the scene's probes and free blocks");
+    if (first_) total0_ = s.energy.total();
+    first_ = false;
+    char buf[40];
+    std::snprintf(buf, sizeof buf, "%.17g", s.t);
+    line_ = buf;
+    for (const auto& p : s.probes)
+        for (int k = 0; k < 3; ++k) put(line_, p[k]);
+    for (const auto& b : s.blocks) {
+        for (int k = 0; k < 3; ++k) put(line_, b.position[k]);
+        for (double q : {b.orientation.w(), b.orientation.x(), b.orientation.y(), b.orientation.z()})
+            put(line_, q);
     }
+    const Energies& e = s.energy;
+    for (double x : {e.kinetic, e.potential, e.contact, e.strain, e.dissipated, e.external,
+                     e.total() - total0_})
+        put(line_, x);
+    line_ += "," + std::to_string(s.contacts);
+    out_ << line_ << '\n';
+}
+
+void write_trajectory_csv(std::ostream& out, const Scene& scene, const std::vector<Sample>& samples) {
+    TrajectoryCsvWriter w(out, scene);
+    for (const auto& s : samples) w.row(s);
+}
+
+namespace {
+/// bytes buffered between writes to the file
+constexpr size_t kBufferBytes = size_t(1) << 20;
+}  // namespace
+
+TrajectoryCsvFile::TrajectoryCsvFile(std::string path) : path_(std::move(path)) {}
+
+void TrajectoryCsvFile::check() const {
+    if (!out_) throw std::runtime_error("error while writing " + path_ + " (disk full?)");
+}
+
+void TrajectoryCsvFile::begin(const Scene& scene, const RunResult&) {
+    buffer_.resize(kBufferBytes);
+    out_.rdbuf()->pubsetbuf(buffer_.data(), std::streamsize(buffer_.size()));
+    out_.open(path_, std::ios::binary | std::ios::trunc);
+    if (!out_) throw std::runtime_error("cannot write " + path_);
+    writer_ = std::make_unique<TrajectoryCsvWriter>(out_, scene);
+    check();
+}
+
+void TrajectoryCsvFile::sample(const Sample& s) {
+    writer_->row(s);
+    check();
+}
+
+void TrajectoryCsvFile::end(const RunResult&) {
+    out_.flush();
+    check();
+    out_.close();
+    if (!out_) throw std::runtime_error("error while closing " + path_ + " (disk full?)");
+    sync_file(path_);
 }
 
 }  // namespace cairn

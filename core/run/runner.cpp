@@ -7,6 +7,7 @@
 
 #include "error.hpp"
 #include "geometry/hexahedron.hpp"
+#include "run/stop.hpp"
 
 namespace cairn {
 
@@ -74,7 +75,7 @@ std::string unstable_message(double t, const std::string& why, double dt, double
 
 }  // namespace
 
-RunResult run_scene(Backend& backend, const Scene& scene, const RunOptions& options,
+RunResult run_scene(Backend& backend, const Scene& scene, const RunOptions& options, SampleSink& sink,
                     const ProgressFn& progress) {
     backend.build(scene, options);
 
@@ -91,15 +92,14 @@ RunResult run_scene(Backend& backend, const Scene& scene, const RunOptions& opti
 
     const double gravity_scale = potential_scale(scene);
     double motion_scale = 0.0;   // max over earlier samples of |kinetic| + |contact| + |strain|, J
-    double total0 = 0.0;
 
     // check one sample; returns the reason if the run must stop
     auto check = [&](const Sample& s) -> std::string {
         if (auto bad = non_finite(s, scene); !bad.empty()) return bad;
         const Energies& e = s.energy;
         const double motion = std::abs(e.kinetic) + std::abs(e.contact) + std::abs(e.strain);
-        if (r.samples.empty()) {
-            total0 = e.total();
+        if (r.sample_count == 0) {
+            r.initial_total = e.total();
             motion_scale = motion;
         }
         // the motion part of the scale comes from the samples before this one: energy that grows
@@ -107,13 +107,21 @@ RunResult run_scene(Backend& backend, const Scene& scene, const RunOptions& opti
         const double scale =
             std::max(kMinScale, motion_scale + std::abs(e.external) + gravity_scale);
         motion_scale = std::max(motion_scale, motion);
-        const double err = e.total() - total0;
+        const double err = e.total() - r.initial_total;
         r.max_balance_error = std::max(r.max_balance_error, std::abs(err) / scale);
         if (std::abs(err) > kDriftBound * scale) r.energy_drift = true;
         if (err > kGrowthBound * scale)
             return "energy growing without a source (balance error " + format_g("%.3g", err) +
                    " J against an energy scale of " + format_g("%.3g", scale) + " J)";
         return {};
+    };
+
+    // hand a finite sample to the sink and keep the running summary
+    auto keep = [&](const Sample& s) {
+        ++r.sample_count;
+        r.final_time = s.t;
+        r.final_energy = s.energy;
+        sink.sample(s);
     };
 
     const auto start = std::chrono::steady_clock::now();
@@ -123,27 +131,41 @@ RunResult run_scene(Backend& backend, const Scene& scene, const RunOptions& opti
     double next_progress = kProgressEvery;
 
     // record a sample; false (with the message set) when it shows the run is unstable
+    long long sampled = -1;   // step of the last sample taken
     auto record = [&](long long step) {
-        Sample s = backend.sample();
+        sampled = step;
+        const Sample s = backend.sample();
         const std::string why = check(s);
         const bool finite_sample = why.empty() || non_finite(s, scene).empty();
-        if (finite_sample) r.samples.push_back(std::move(s));
+        if (finite_sample) keep(s);
         if (why.empty()) return true;
         r.status = RunStatus::unstable;
         r.message = unstable_message(double(step) * r.dt, why, r.dt, r.critical_step);
         return false;
     };
 
+    sink.begin(scene, r);
     bool ok = record(0);
     for (long long k = 1; ok && k <= total_steps; ++k) {
+        if (stop_requested()) {
+            // the state reached so far ends the partial trajectory
+            if (sampled != r.steps) ok = record(r.steps);
+            if (ok) {
+                r.status = RunStatus::interrupted;
+                r.message = "interrupted at t = " + format_g("%.6g", double(r.steps) * r.dt) +
+                            " s after " + std::to_string(r.steps) + " of " +
+                            std::to_string(total_steps) + " steps";
+            }
+            break;
+        }
         const StepStatus st = backend.step();
         r.steps = k;
         if (st == StepStatus::unstable) {
             r.status = RunStatus::unstable;
             r.message = unstable_message(double(k) * r.dt, backend.failure(), r.dt, r.critical_step);
             // keep the state at failure when it is still finite: it shows what went wrong
-            Sample s = backend.sample();
-            if (non_finite(s, scene).empty()) r.samples.push_back(std::move(s));
+            const Sample s = backend.sample();
+            if (non_finite(s, scene).empty()) keep(s);
             break;
         }
         if (k % r.output_every == 0 || k == total_steps) ok = record(k);
@@ -153,6 +175,15 @@ RunResult run_scene(Backend& backend, const Scene& scene, const RunOptions& opti
         }
     }
     r.wall_seconds = elapsed();
+    sink.end(r);
+    return r;
+}
+
+RunResult run_scene(Backend& backend, const Scene& scene, const RunOptions& options,
+                    const ProgressFn& progress) {
+    CollectingSink sink;
+    RunResult r = run_scene(backend, scene, options, sink, progress);
+    r.samples = std::move(sink.samples);
     return r;
 }
 

@@ -1,23 +1,31 @@
 #pragma once
-/// Drives a backend through a scene: steps, samples at the output interval, and stops a run that
-/// goes unstable (NaN, or energy growing without a source) with a message naming the time and the
-/// critical step.
+/// Drives a backend through a scene: steps, hands a sample to a sink at every output interval, and
+/// stops a run that goes unstable (NaN, or energy growing without a source) with a message naming
+/// the time and the critical step, or that is asked to stop (run/stop.hpp). The energy checks keep
+/// running summaries, so a run's memory does not grow with its length.
 
 #include <functional>
 #include <string>
 #include <vector>
 
 #include "backend/backend.hpp"
+#include "run/sample_sink.hpp"
 
 namespace cairn {
 
-enum class RunStatus { completed, unstable };
+/// How a run ended: every step taken, stopped because it went unstable, or stopped on request.
+enum class RunStatus { completed, unstable, interrupted };
 
 /// Everything a run produced.
 struct RunResult {
     RunStatus status = RunStatus::completed;
     std::string message;             ///< why it stopped early (empty when completed)
-    std::vector<Sample> samples;     ///< t = 0 first, one per output interval
+    std::vector<Sample> samples;     ///< t = 0 first, one per output interval; filled only by the
+                                     ///< run_scene overload without a sink
+    long long sample_count = 0;      ///< samples handed to the sink
+    double initial_total = 0.0;      ///< total energy of the first sample, J
+    double final_time = 0.0;         ///< time of the last sample, s
+    Energies final_energy;           ///< energies of the last sample, J
     double dt = 0.0;                 ///< s
     double critical_step = 0.0;      ///< s, as the backend estimated it (0 = unknown)
     long long steps = 0;             ///< steps taken
@@ -30,7 +38,12 @@ struct RunResult {
 /// called now and then with the fraction done, for a progress line on a terminal
 using ProgressFn = std::function<void(double fraction)>;
 
-/// build `backend` from `scene` and run it for scene.run.duration
+/// build `backend` from `scene` and run it for scene.run.duration, handing every sample to `sink`
+/// as it is taken (begin, sample..., end); a sink's exception ends the run and propagates
+RunResult run_scene(Backend& backend, const Scene& scene, const RunOptions& options, SampleSink& sink,
+                    const ProgressFn& progress = {});
+
+/// the same, with the samples collected into RunResult::samples
 RunResult run_scene(Backend& backend, const Scene& scene, const RunOptions& options,
                     const ProgressFn& progress = {});
 

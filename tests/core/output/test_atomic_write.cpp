@@ -8,27 +8,13 @@
 
 #include "error.hpp"
 #include "output/atomic_write.hpp"
+#include "output_files.hpp"
 
 namespace fs = std::filesystem;
 using namespace cairn;
 
-namespace {
-
-std::string read_all(const fs::path& p) {
-    std::ifstream in(p, std::ios::binary);
-    std::stringstream ss;
-    ss << in.rdbuf();
-    return ss.str();
-}
-
-fs::path scratch_dir(const std::string& name) {
-    const fs::path dir = fs::path(CAIRN_BINARY_DIR) / "test_scratch" / name;
-    fs::remove_all(dir);
-    fs::create_directories(dir);
-    return dir;
-}
-
-}  // namespace
+using testing::read_all;
+using testing::scratch_dir;
 
 TEST_CASE("write_file_atomic replaces the file when the writer succeeds", "[output]") {
     const fs::path dir = scratch_dir("atomic_ok");
