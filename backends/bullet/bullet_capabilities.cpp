@@ -14,7 +14,8 @@ std::vector<FeatureSupport> bullet_capabilities() {
          "rigid mode: near-rigid contact"},
         {"normal contact damping", S::approximate, "matched mode: dashpot per manifold point (c/4); rigid: none"},
         {"elastic stick before slip", S::none, "velocity-level Coulomb friction: no shear spring"},
-        {"friction shape", S::approximate, "two friction directions clamped separately per point (box)"},
+        {"friction shape", S::approximate, "two friction directions clamped separately per point (box), the first along the sliding "
+         "velocity: sliding threshold 1.002 mu·W at 0, 30 and 45 degrees"},
         {"mass-proportional damping", S::approximate, "body damping 1-exp(-alpha), applied after each step"},
         {"stiffness-proportional damping", S::none, "beta ignored (rigid bodies)"},
         {"deformable blocks", S::none, "refused: run with --model rigid"},

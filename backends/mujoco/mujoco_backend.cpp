@@ -10,6 +10,7 @@
 #include "engine_settings.hpp"
 #include "error.hpp"
 #include "geometry/hexahedron.hpp"
+#include "mujoco_collision.hpp"
 #include "mujoco_model.hpp"
 #include "rigid_blocks.hpp"
 
@@ -27,6 +28,14 @@ void on_error(const char* msg) {
     if (g_error_jump) std::longjmp(*g_error_jump, 1);
 }
 void on_warning(const char* msg) { g_error_text = msg; }
+
+// matched mode: constant impedance d of the normal rows. MuJoCo's soft constraint adds to the
+// spring a share of the rigid constraint force that grows with d; with the static penetration
+// calibrated exactly, that share lengthens the period by about 2d/(1-d) for four contacts on a
+// face (docs/backends.md), so d is kept small: 1e-3 gives +0.2 %
+constexpr double kMatchedImpedance = 1e-3;
+// impedance of rigid contacts and of matched-mode friction rows
+constexpr double kFrictionImpedance = 0.99;
 
 // rows MuJoCo 2.2.2 could allocate here (its constraint arrays grow with njmax², engines.md)
 constexpr int kMaxRows = 10000;
@@ -66,11 +75,18 @@ private:
         return block_point_world(b, com(body_[block]), orientation(body_[block]), p);
     }
     Vec3 point_velocity(int block, const Vec3& world_point) const;
+    void matched_step();
+    void calibrate_contacts();
+    PointSpring pair_spring(const mjContact& c) const;
+    double depth_scale(const mjContact& c) const;
 
     Scene scene_;
     std::vector<RigidBlock> blocks_;
     std::vector<int> body_;          // MuJoCo body id per block (0 for fixed blocks)
-    std::vector<double> spring_;     // matched mode: per-point spring kn·A/4 per block, N/m
+    std::vector<int> geom_block_;    // block index per MuJoCo geom id
+    MujocoHexahedra hexahedra_;      // the same for the hexahedron collider
+    double impedance_ = 0.0;         // solimp d of every contact
+    double friction_damping_ = 0.0;  // matched mode: B of the friction rows, 1/s
     mjModel* m_ = nullptr;
     mjData* d_ = nullptr;
     bool matched_ = false;
@@ -97,11 +113,11 @@ void MujocoBackend::build(const Scene& scene, const RunOptions& options) {
     EngineSettings settings(scene_, "mujoco");
     matched_ = contact_mode(settings, options) == "matched";
     MujocoParameters p;
-    p.cone = settings.word("cone", matched_ ? "elliptic" : "pyramidal", {"pyramidal", "elliptic"});
+    p.cone = settings.word("cone", "elliptic", {"pyramidal", "elliptic"});
     p.iterations = static_cast<int>(settings.integer("iterations", 100, 1));
     p.tolerance = settings.number("tolerance", 1e-10, 0.0);
     p.noslip_iterations = static_cast<int>(settings.integer("noslip_iterations", 0, 0));
-    p.impedance = settings.number("impedance", matched_ ? 0.9 : 0.99, 1e-4);
+    p.impedance = settings.number("impedance", matched_ ? kMatchedImpedance : kFrictionImpedance, 1e-4);
     p.solref[0] = settings.number("timeconst", 0.002, 0.0);
     p.solref[1] = settings.number("dampratio", 1.0, 0.0);
     settings.finish();
@@ -136,27 +152,12 @@ void MujocoBackend::build(const Scene& scene, const RunOptions& options) {
         throw Error("mujoco: the matched contact mode is calibrated for cone = \"elliptic\" only "
                     "(a pyramid's edges share the normal force in a way that depends on mu)");
     if (matched_) {
-        // a per-geom direct solref (-S, -B): at rest MuJoCo balances R f = S r / d on each normal
-        // row with R = (1 - d)/d * w; the static penetration of a face-on-face pair (4 contacts)
-        // is mg/(kn A) for S = (1 - d) * kCalibration * kn A / (4 m). kCalibration = 2 was measured
-        // (MuJoCo 2.2.2: a 1 m and a 0.5 m cube, d = 0.5 ... 0.9; tests pin it)
-        constexpr double kCalibration = 2.0;
-        const double imp = p.impedance;
-        p.block_solref.resize(blocks_.size());
-        std::array<double, 2> shared{0.0, 0.0};
-        for (const RigidBlock& b : blocks_) {
-            if (b.fixed) continue;
-            PointSpring s = matched_point_spring(scene_, b, nullptr);
-            double stiffness = (1.0 - imp) * kCalibration * s.stiffness / b.mass;
-            double omega = std::sqrt(stiffness / imp);
-            double zeta = 4.0 * s.damping / (2.0 * std::sqrt(4.0 * s.stiffness * b.mass));
-            p.block_solref[b.index] = {-stiffness, -2.0 * zeta * omega * imp};
-            if (shared[0] == 0.0) shared = p.block_solref[b.index];
-        }
-        // a fixed block takes the first free block's values (MuJoCo averages a pair's solref)
-        for (const RigidBlock& b : blocks_)
-            if (b.fixed) p.block_solref[b.index] = shared;
+        // friction rows keep the rigid mode's impedance: R_friction = R_normal / impratio
+        const double d = p.impedance, df = kFrictionImpedance;
+        p.impratio = ((1.0 - d) / d) / ((1.0 - df) / df);
     }
+    impedance_ = p.impedance;
+    friction_damping_ = 2.0 / (kFrictionImpedance * std::max(p.solref[0], 2.0 * p.dt));
 
     std::string xml = mujoco_xml(scene_, blocks_, p);
     mjVFS vfs;
@@ -183,6 +184,17 @@ void MujocoBackend::build(const Scene& scene, const RunOptions& options) {
     g_error_jump = nullptr;
     if (!d_) throw Error("backend mujoco: could not allocate the simulation data");
 
+    geom_block_.assign(m_->ngeom, -1);
+    for (const RigidBlock& b : blocks_) {
+        int g = mj_name2id(m_, mjOBJ_GEOM, ("g" + std::to_string(b.index)).c_str());
+        if (g >= 0) geom_block_[g] = b.index;
+    }
+    install_hexahedron_collider();
+    hexahedra_.model = m_;
+    hexahedra_.geom_block.assign(m_->ngeom, nullptr);
+    for (int g = 0; g < m_->ngeom; ++g)
+        if (geom_block_[g] >= 0) hexahedra_.geom_block[g] = &blocks_[geom_block_[g]];
+    CurrentHexahedra current(&hexahedra_);
     body_.assign(blocks_.size(), 0);
     int next = 1;
     for (const RigidBlock& b : blocks_) {
@@ -209,9 +221,12 @@ void MujocoBackend::build(const Scene& scene, const RunOptions& options) {
       << p.cone << " friction cone, margin 0, njmax " << p.njmax << ", nconmax " << p.nconmax;
     note(n);
     if (matched_)
-        n << "matched contact: direct solref per geom so the static penetration of a face-on-face pair is "
-             "mg/(kn*A) (4 contacts assumed), impedance " << p.impedance
-          << "; the contact frequency is MuJoCo's, not sqrt(kn*A/m); pair values are averaged by MuJoCo";
+        n << "matched contact: direct solref (-k, -b) set on every contact after collision from its pair: "
+             "kn*A/4 and c/4 per contact (A = smaller bottom-face area, c from the pair's reduced mass) "
+             "times MuJoCo's (1-d)*invweight of the two bodies, impedance d " << p.impedance
+          << " (static penetration exact, period of kn*A long by about " << 2.0 * p.impedance / (1.0 - p.impedance) * 100
+          << " %); friction rows impedance " << kFrictionImpedance << " (impratio " << p.impratio
+          << ") and damping " << friction_damping_ << " 1/s";
     else
         n << "rigid contact: solref " << p.solref[0] << " " << p.solref[1] << ", solimp " << p.impedance << " "
           << p.impedance << " 0.001";
@@ -230,13 +245,15 @@ void MujocoBackend::build(const Scene& scene, const RunOptions& options) {
     for (const auto& line : rigid_engine_notes(scene_)) notes_.push_back(line);
     for (const RigidBlock& b : blocks_)
         if (!b.is_box) {
-            n << "general hexahedra: mesh geoms (convex hull); MuJoCo 2.2.2 gives one contact per mesh pair";
+            n << "general hexahedra: mesh geoms; box-mesh and mesh-mesh pairs collide through cairn's "
+                 "face-clipping collider (up to 4 points; MuJoCo 2.2.2's mesh collider gives one)";
             note(n);
             break;
         }
 }
 
 StepStatus MujocoBackend::step() {
+    CurrentHexahedra current(&hexahedra_);
     // loads at their material points: xfrc_applied persists, so it is rewritten every step
     std::memset(d_->xfrc_applied, 0, sizeof(mjtNum) * 6 * m_->nbody);
     const double t = d_->time;
@@ -254,7 +271,10 @@ StepStatus MujocoBackend::step() {
         }
         p0 += force.dot(point_velocity(l.block, p));
     }
-    mj_step(m_, d_);
+    if (matched_) matched_step();
+    else mj_step(m_, d_);
+    // mj_step computes positions before it integrates: bring the poses to the new qpos
+    mj_kinematics(m_, d_);
     if (scene_.damping.alpha > 0) {
         const double k = std::exp(-scene_.damping.alpha * dt_);
         for (int i = 0; i < m_->nv; ++i) d_->qvel[i] *= k;
@@ -279,6 +299,64 @@ StepStatus MujocoBackend::step() {
     return StepStatus::ok;
 }
 
+PointSpring MujocoBackend::pair_spring(const mjContact& c) const {
+    const RigidBlock& a = blocks_[geom_block_[c.geom1]];
+    const RigidBlock& b = blocks_[geom_block_[c.geom2]];
+    return a.fixed ? matched_point_spring(scene_, b, &a) : matched_point_spring(scene_, a, &b);
+}
+
+double MujocoBackend::depth_scale(const mjContact& c) const {
+    // MuJoCo 2.2.2's box-box collider reports half the overlap as the contact distance (a 0.5 mm
+    // overlap gives dist = -0.25 mm; mesh pairs give the full overlap) while the row's velocity is
+    // the full approach speed: the spring on dist needs twice the stiffness
+    return m_->geom_type[c.geom1] == mjGEOM_BOX && m_->geom_type[c.geom2] == mjGEOM_BOX ? 2.0 : 1.0;
+}
+
+void MujocoBackend::calibrate_contacts() {
+    // at rest each normal row balances R f = K d r (R = (1-d)/d w, w = the rows' invweight:
+    // MuJoCo's body_invweight0 of both bodies) and its reference damping adds B v: solref
+    // (-(1-d) w k, -(1-d) w c) makes f = k r + c v per contact with the pair's own k and c
+    const double d = impedance_;
+    for (int i = 0; i < d_->ncon; ++i) {
+        mjContact& c = d_->contact[i];
+        PointSpring s = pair_spring(c);
+        int b1 = m_->geom_bodyid[c.geom1], b2 = m_->geom_bodyid[c.geom2];
+        double w = m_->body_invweight0[2 * b1] + m_->body_invweight0[2 * b2];
+        c.solref[0] = -(1.0 - d) * w * s.stiffness * depth_scale(c);
+        c.solref[1] = -(1.0 - d) * w * s.damping;
+    }
+}
+
+void MujocoBackend::matched_step() {
+    // mj_step's pipeline (MuJoCo 2.2.2: mj_checkPos, mj_checkVel, mj_forward, mj_checkAcc,
+    // mj_Euler; no sensors) with each contact's solref set between collision and constraint
+    // assembly, and the friction rows' damping set before the reference accelerations
+    mj_checkPos(m_, d_);
+    mj_checkVel(m_, d_);
+    mj_kinematics(m_, d_);
+    mj_comPos(m_, d_);
+    mj_camlight(m_, d_);
+    mj_tendon(m_, d_);
+    mj_crb(m_, d_);
+    mj_factorM(m_, d_);
+    mj_collision(m_, d_);
+    calibrate_contacts();
+    mj_makeConstraint(m_, d_);
+    for (int i = 0; i < d_->ncon; ++i) {
+        const mjContact& c = d_->contact[i];
+        if (c.efc_address < 0) continue;
+        for (int j = 1; j < c.dim; ++j) d_->efc_KBIP[4 * (c.efc_address + j) + 1] = friction_damping_;
+    }
+    mj_transmission(m_, d_);
+    mj_projectConstraint(m_, d_);
+    mj_fwdVelocity(m_, d_);
+    mj_fwdActuation(m_, d_);
+    mj_fwdAcceleration(m_, d_);
+    mj_fwdConstraint(m_, d_);
+    mj_checkAcc(m_, d_);
+    mj_Euler(m_, d_);
+}
+
 Sample MujocoBackend::sample() const {
     Sample s;
     s.t = d_->time;
@@ -300,14 +378,8 @@ Sample MujocoBackend::sample() const {
         for (int i = 0; i < d_->ncon; ++i) {
             const mjContact& c = d_->contact[i];
             if (c.dist >= 0) continue;
-            int b1 = m_->geom_bodyid[c.geom1], b2 = m_->geom_bodyid[c.geom2];
-            int body = b1 != 0 ? b1 : b2;
-            for (size_t k = 0; k < blocks_.size(); ++k)
-                if (body_[k] == body) {
-                    PointSpring sp = matched_point_spring(scene_, blocks_[k], nullptr);
-                    s.energy.contact += 0.5 * sp.stiffness * c.dist * c.dist;
-                    break;
-                }
+            const double overlap = depth_scale(c) * c.dist;
+            s.energy.contact += 0.5 * pair_spring(c).stiffness * overlap * overlap;
         }
     return s;
 }

@@ -26,10 +26,8 @@ std::string geom(const RigidBlock& b, const Scene& scene, const MujocoParameters
     s << "<geom";
     if (b.is_box) s << " type=\"box\" size=\"" << vec(b.half_extents) << "\"";
     else s << " type=\"mesh\" mesh=\"m" << b.index << "\"";
-    const auto& ref = p.block_solref.empty() ? std::array<double, 2>{p.solref[0], p.solref[1]}
-                                             : p.block_solref[b.index];
-    s << " condim=\"3\" margin=\"0\" gap=\"0\" friction=\"" << scene.contact.friction << " 0 0\""
-      << " solref=\"" << ref[0] << ' ' << ref[1] << "\" solimp=\"" << p.impedance << ' ' << p.impedance
+    s << " name=\"g" << b.index << "\" condim=\"3\" margin=\"0\" gap=\"0\" friction=\"" << scene.contact.friction << " 0 0\""
+      << " solref=\"" << p.solref[0] << ' ' << p.solref[1] << "\" solimp=\"" << p.impedance << ' ' << p.impedance
       << " 0.001 0.5 2\" " << extra << "/>\n";
     return s.str();
 }
@@ -42,7 +40,7 @@ std::string mujoco_xml(const Scene& scene, const std::vector<RigidBlock>& blocks
     x << "<mujoco model=\"cairn\">\n"
       << "<compiler angle=\"radian\" inertiafromgeom=\"false\" boundmass=\"0\" boundinertia=\"0\"/>\n"
       << "<option timestep=\"" << p.dt << "\" gravity=\"" << vec(scene.gravity) << "\" cone=\"" << p.cone
-      << "\" integrator=\"Euler\" iterations=\"" << p.iterations << "\" noslip_iterations=\"" << p.noslip_iterations << "\" tolerance=\"" << p.tolerance
+      << "\" impratio=\"" << p.impratio << "\" integrator=\"Euler\" iterations=\"" << p.iterations << "\" noslip_iterations=\"" << p.noslip_iterations << "\" tolerance=\"" << p.tolerance
       << "\" density=\"0\" viscosity=\"0\"/>\n"
       << "<size njmax=\"" << p.njmax << "\" nconmax=\"" << p.nconmax << "\"/>\n";
     // mesh vertices relative to the centre of mass, block axes

@@ -3,7 +3,6 @@
 /// axes at the centre of mass), fixed blocks as world geoms, boxes as box geoms, general
 /// hexahedra as mesh geoms.
 
-#include <array>
 #include <string>
 #include <vector>
 
@@ -20,8 +19,9 @@ struct MujocoParameters {
     int noslip_iterations = 0;            ///< iterations of the no-slip post-solver (0 = off)
     double tolerance = 1e-10;             ///< solver tolerance
     double impedance = 0.99;              ///< constant solimp d (dmin = dmax)
-    double solref[2] = {0.002, 1.0};      ///< (timeconst s, dampratio) or (−k, −b) per geom
-    std::vector<std::array<double, 2>> block_solref;   ///< per block override (matched mode), or empty
+    double solref[2] = {0.002, 1.0};      ///< (timeconst s, dampratio) per geom; matched mode
+                                          ///< overwrites each contact's solref after collision
+    double impratio = 1.0;                ///< friction-to-normal impedance ratio (elliptic cone)
     int nconmax = 100;                    ///< contact list size
     int njmax = 500;                      ///< constraint rows
 };

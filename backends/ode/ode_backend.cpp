@@ -13,6 +13,7 @@
 
 #include "engine_settings.hpp"
 #include "error.hpp"
+#include "hexahedron_contact.hpp"
 #include "rigid_blocks.hpp"
 
 namespace cairn {
@@ -28,8 +29,12 @@ struct ConvexData {
     std::array<unsigned, 6 * 5> polygons;  // 4, i0..i3 per face, counter-clockwise from outside
 };
 
-// ODE aborts the process on an internal error (e.g. its convex-convex collider failing to
-// normalise a degenerate normal); its handlers let cairn stop the run with a message instead
+// ODE 0.16 calls exit(1) after its error handler and abort() after its debug (internal error)
+// handler returns (ode/src/error.cpp), so a handler must not return. The library is C++ built
+// with exceptions (it links the C++ personality routine and has .gcc_except_table): an exception
+// unwinds its frames, where a longjmp would skip their destructors. The world it leaves behind
+// may be half-stepped and keeps whatever ODE had allocated for that step, so the backend never
+// touches it again (see abandon_world)
 struct OdeFault : std::runtime_error {
     using std::runtime_error::runtime_error;
 };
@@ -68,10 +73,14 @@ public:
 private:
     static void near_callback(void* self, dGeomID a, dGeomID b);
     void collide(dGeomID a, dGeomID b);
+    Vec3 trial_slip(dBodyID a, dBodyID b, const dContactGeom& g) const;
     void clear();
     Vec3 com(int block) const;
     Quat orientation(int block) const;
+    Corners world_corners(const RigidBlock& b) const;
     double load_power() const;
+    void abandon_world();
+    void forget_world();   // drop every handle into ODE without calling it
 
     Scene scene_;
     std::vector<RigidBlock> blocks_;
@@ -94,6 +103,8 @@ private:
     struct Recorded { dContactGeom geom; int a, b; bool a_fixed; };
     std::vector<Recorded> recorded_;
     std::deque<dJointFeedback> feedback_;   // a deque: joints keep pointers to its elements
+    bool faulted_ = false;   // an ODE error stopped the run; the world is abandoned
+    Sample frozen_;          // the last state before the fault
     std::string failure_;
     std::vector<std::string> notes_;
 };
@@ -102,6 +113,10 @@ void OdeBackend::clear() {
     if (contacts_) dJointGroupDestroy(contacts_);
     if (space_) dSpaceDestroy(space_);   // destroys the geoms it holds
     if (world_) dWorldDestroy(world_);   // destroys the bodies
+    forget_world();
+}
+
+void OdeBackend::forget_world() {
     contacts_ = nullptr;
     space_ = nullptr;
     world_ = nullptr;
@@ -117,6 +132,12 @@ Vec3 OdeBackend::com(int block) const {
     return {p[0], p[1], p[2]};
 }
 
+Corners OdeBackend::world_corners(const RigidBlock& b) const {
+    Corners w;
+    for (int i = 0; i < 8; ++i) w[i] = block_point_world(b, com(b.index), orientation(b.index), b.corners[i]);
+    return w;
+}
+
 Quat OdeBackend::orientation(int block) const {
     const dBodyID b = bodies_[block];
     if (!b) return blocks_[block].orientation;
@@ -129,12 +150,15 @@ void OdeBackend::build(const Scene& scene, const RunOptions& options) {
     scene_ = scene;
     notes_.clear();
     failure_.clear();
+    faulted_ = false;
     t_ = external_work_ = contact_energy_ = 0.0;
     contact_count_ = 0;
     EngineSettings settings(scene_, "ode");
     matched_ = contact_mode(settings, options) == "matched";
     record_contacts_ = options.record_contacts;
-    std::string stepper = settings.word("stepper", "auto", {"auto", "step", "quickstep"});
+    // QuickStep by default: dWorldStep's direct LCP lets a block creep near its friction limit
+    // (a cube on a 45 degree slope at mu = 1.1 slides 32 mm in 1 s; docs/backends.md)
+    std::string stepper = settings.word("stepper", "quickstep", {"auto", "step", "quickstep"});
     const long long iterations = settings.integer("iterations", 50, 1);
     const double max_correcting = settings.number("max_correcting_vel", 0.01, 0.0);
     const double erp = settings.number("erp", 0.2, 0.0);
@@ -230,7 +254,8 @@ void OdeBackend::build(const Scene& scene, const RunOptions& options) {
           << max_correcting << " m/s, restitution " << scene_.contact.restitution;
     note(n);
     n << "friction: dContactApprox1, mu " << scene_.contact.friction
-      << " per contact in two directions (pyramid); no elastic stick before slip";
+      << " per contact in two directions (pyramid), the first along the contact's trial sliding velocity "
+         "(dContactFDir1); no elastic stick before slip";
     note(n);
     if (scene_.damping.alpha > 0) {
         n << "mass-proportional damping: velocities scaled by exp(-alpha*dt) after each step";
@@ -250,6 +275,7 @@ void OdeBackend::build(const Scene& scene, const RunOptions& options) {
 // the last step's contact joints with the forces they applied
 std::vector<ContactPoint> OdeBackend::contact_points() const {
     std::vector<ContactPoint> out;
+    if (faulted_) return out;   // the step that faulted has no trustworthy forces
     for (size_t i = 0; i < recorded_.size(); ++i) {
         const Recorded& r = recorded_[i];
         ContactPoint c;
@@ -272,21 +298,66 @@ void OdeBackend::near_callback(void* self, dGeomID a, dGeomID b) {
     static_cast<OdeBackend*>(self)->collide(a, b);
 }
 
+// relative velocity of body a against body b at the contact, tangential, after this step's
+// gravity and loads but before any contact force, m/s
+Vec3 OdeBackend::trial_slip(dBodyID a, dBodyID b, const dContactGeom& g) const {
+    Vec3 v = Vec3::Zero();
+    for (int side = 0; side < 2; ++side) {
+        dBodyID body = side == 0 ? a : b;
+        if (!body) continue;
+        dVector3 pv;
+        dBodyGetPointVel(body, g.pos[0], g.pos[1], g.pos[2], pv);
+        const dReal* f = dBodyGetForce(body);
+        dMass m;
+        dBodyGetMass(body, &m);
+        Vec3 trial = Vec3(pv[0], pv[1], pv[2]) + dt_ * (Vec3(f[0], f[1], f[2]) / m.mass + scene_.gravity);
+        v += side == 0 ? trial : Vec3(-trial);
+    }
+    const Vec3 n(g.normal[0], g.normal[1], g.normal[2]);
+    return v - v.dot(n) * n;
+}
+
 void OdeBackend::collide(dGeomID ga, dGeomID gb) {
     dBodyID ba = dGeomGetBody(ga), bb = dGeomGetBody(gb);
     if (!ba && !bb) return;   // two fixed blocks
     constexpr int kMax = 4;
     dContact c[kMax];
-    int n = dCollide(ga, gb, kMax, &c[0].geom, sizeof(dContact));
-    if (n == 0) return;
     const auto& a = blocks_[reinterpret_cast<intptr_t>(dGeomGetData(ga))];
     const auto& b = blocks_[reinterpret_cast<intptr_t>(dGeomGetData(gb))];
+    int n = 0;
+    if (a.is_box && b.is_box) {
+        n = dCollide(ga, gb, kMax, &c[0].geom, sizeof(dContact));
+    } else {
+        // ODE's convex-convex collider gives one point per face-on-face pair (a hinge) and a zero
+        // normal for exactly touching faces: cairn's face-clipping collider instead
+        for (const HexContact& h : hexahedron_contacts(world_corners(a), world_corners(b), kMax)) {
+            dContactGeom& g = c[n++].geom;
+            for (int k = 0; k < 3; ++k) {
+                g.pos[k] = h.position[k];
+                g.normal[k] = h.normal[k];
+            }
+            g.depth = h.depth;
+            g.g1 = ga;
+            g.g2 = gb;
+            g.side1 = g.side2 = -1;
+        }
+    }
+    if (n == 0) return;
     PointSpring s;
     if (matched_) s = a.fixed ? matched_point_spring(scene_, b, &a) : matched_point_spring(scene_, a, &b);
     for (int i = 0; i < n; ++i) {
         dSurfaceParameters& sp = c[i].surface;
         sp.mode = dContactApprox1;
         sp.mu = scene_.contact.friction;
+        // dContactApprox1 clamps each friction direction at mu N separately (a pyramid): turned
+        // along the sliding the contact would have without friction, it limits that sliding at
+        // mu N in every direction
+        Vec3 t = trial_slip(ba, bb, c[i].geom);
+        if (t.norm() > 1e-12) {
+            sp.mode |= dContactFDir1;
+            t.normalize();
+            for (int k = 0; k < 3; ++k) c[i].fdir1[k] = t[k];
+        }
         if (scene_.contact.restitution > 0) {
             sp.mode |= dContactBounce;
             sp.bounce = scene_.contact.restitution;
@@ -323,7 +394,16 @@ double OdeBackend::load_power() const {
     return power;
 }
 
+void OdeBackend::abandon_world() {
+    // keep what was last sampled, then let go of the world without another call into it: a
+    // destroy on a half-stepped world (a space still locked by its collide) could fault again
+    frozen_ = sample();
+    forget_world();
+    faulted_ = true;
+}
+
 StepStatus OdeBackend::step() {
+    if (faulted_) return StepStatus::unstable;
     // loads at their material points (ODE clears accumulated forces after each step)
     for (const LoadDef& l : scene_.loads) {
         double f = l.factor(t_);
@@ -342,8 +422,8 @@ StepStatus OdeBackend::step() {
         if (quickstep_) dWorldQuickStep(world_, dt_);
         else dWorldStep(world_, dt_);
     } catch (const OdeFault& e) {
-        dJointGroupEmpty(contacts_);
         failure_ = std::string(e.what()) + " at t = " + std::to_string(t_) + " s";
+        abandon_world();
         return StepStatus::unstable;
     }
     dJointGroupEmpty(contacts_);
@@ -368,6 +448,7 @@ StepStatus OdeBackend::step() {
 }
 
 Sample OdeBackend::sample() const {
+    if (faulted_) return frozen_;
     Sample s;
     s.t = t_;
     for (const RigidBlock& b : blocks_) {

@@ -1,5 +1,5 @@
 #pragma once
-/// Analytic references of the validation cases (../shared/reference/physics.md), SI units.
+/// Analytic references of the validation cases (docs/validation.md), SI units.
 
 #include <vector>
 
@@ -36,7 +36,7 @@ double dashpot_for_ratio(double zeta, double stiffness, double mass);
 
 /// The block of DroppedBlock on a spring K with a dashpot c whose force max(0, −K x − c ẋ) never
 /// pulls: the contact releases when spring + dashpot reach zero (the "gravity + release" rule of
-/// physics.md). No closed form: the contact phase is integrated with RK4 at T/2e5 steps.
+/// the validation). No closed form: the contact phase is integrated with RK4 at T/2e5 steps.
 struct DampedDrop {
     double mass, stiffness, damping, g, gap;   ///< kg, N/m, N·s/m, m/s², m
 

@@ -2,6 +2,7 @@
 /// The metrics of one run of a validation case against the analytic reference its scene declares
 /// ([reference] kind), and the curves its figure shows.
 
+#include <array>
 #include <string>
 #include <vector>
 
@@ -13,7 +14,13 @@ namespace cairn::cases {
 
 /// What kind of contact a run had: it decides which references apply.
 struct ContactKind {
-    bool penalty = true;   ///< penalty springs (dem, engines in matched mode); false: rigid contact
+    bool penalty = true;        ///< penalty springs (dem, engines in matched mode); false: rigid contact
+    /// the penalty contact is the paper's hitting-point springs (dem); false for an engine's
+    /// matched contact, which matches kn·A of a face but not the springs along an edge nor their loss
+    bool point_springs = true;
+    /// hitting-face divisions of the reference block along its block-frame axes (1: a rigid block's
+    /// single face per side; a deformable block's mesh divisions: its hitting grid is per boundary face)
+    std::array<int, 3> divisions{1, 1, 1};
 };
 
 /// Metrics and figure data of one run.

@@ -53,14 +53,14 @@ CaseAnalysis analyse_drop(const Scene& scene, const std::vector<Sample>& s, Cont
         const double eq = o.mass * o.g / o.stiffness;
         const double hi = max_value(d), lo = min_value(d), mid = 0.5 * (hi + lo);
         r.metrics.push_back(relative("equilibrium penetration", "m", mid, eq, 0.01,
-                                     "mg/K (" + oracle_note + "), mid-swing; issue 5: stability within 1 %"));
+                                     "mg/K (" + oracle_note + "), mid-swing; 1 %"));
         r.metrics.push_back(relative("peak penetration", "m", hi, 2.0 * eq, 0.01,
                                      "2mg/K, released just touching; 1 % as the equilibrium"));
         oracle::RestingBlock rb{o.mass, o.stiffness, o.g};
         double period = period_from_crossings(d, mid);
         if (period > 0.0)
             r.metrics.push_back(relative("period", "s", period, rb.period(), 0.01,
-                                         "2π√(m/K); issue 5: within 1 %"));
+                                         "2π√(m/K); 1 %"));
         else
             r.metrics.push_back(missing("period", "s", rb.period(), 0.01, Check::relative, "no oscillation found"));
         auto peaks = extrema(d, true, 0.25 * eq);
@@ -83,10 +83,10 @@ CaseAnalysis analyse_drop(const Scene& scene, const std::vector<Sample>& s, Cont
     r.metrics.push_back(relative("first contact", "s", touch[0], v0 / o.g, 0.01, "free fall √(2h/g)"));
     const double t_end = touch.size() > 1 ? touch[1] : h.t.back();
     r.metrics.push_back(relative("peak penetration", "m", -min_value(h, touch[0], t_end), b.max_penetration, 0.02,
-                                 "1-DOF contact phase with release (" + oracle_note + "); issue 5: 2 %"));
+                                 "1-DOF contact phase with release (" + oracle_note + "); 2 %"));
     if (touch.size() > 1)
         r.metrics.push_back(relative("bounce period", "s", touch[1] - touch[0], o.bounce_period(), 0.01,
-                                     "contact time + 2 e v0/g of the 1-DOF oracle; issue 5: 1 %"));
+                                     "contact time + 2 e v0/g of the 1-DOF oracle; 1 %"));
     else
         r.metrics.push_back(missing("bounce period", "s", o.bounce_period(), 0.01, Check::relative,
                                     "no second contact within the run"));

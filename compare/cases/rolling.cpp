@@ -1,4 +1,4 @@
-// case (d): a cube tumbling down a slope face after face; coarse oracles only (physics.md)
+// case (d): a cube tumbling down a slope face after face; coarse oracles only (docs/validation.md)
 #include <algorithm>
 #include <cmath>
 
@@ -67,8 +67,8 @@ CaseAnalysis analyse_rolling(const Scene& scene, const std::vector<Sample>& s, C
     else
         r.metrics.push_back(missing("advance when tipped 15°", "m", along_ref, 0.01, Check::absolute, "A never tipped 15°"));
     // the geometry of a tumble that lands on the next face: reported, not judged, because the cube
-    // slips and hops during each tumble (physics.md d: only coarse oracles hold)
-    const std::string coarse = "geometry of a clean tumble; not judged: the cube slips near 45-49° and hops (physics.md d)";
+    // slips and hops during each tumble (only coarse oracles hold)
+    const std::string coarse = "geometry of a clean tumble; not judged: the cube slips near 45-49° and hops";
     if (faces > 0) {
         r.metrics.push_back(info("drop over the first face", "m", drop_at(t_face[0]), drop_ref, "edge·sin(slope); " + coarse));
         r.metrics.push_back(info("advance over the first face", "m", along_at(t_face[0]), edge, "one edge; " + coarse));
@@ -79,8 +79,8 @@ CaseAnalysis analyse_rolling(const Scene& scene, const std::vector<Sample>& s, C
     for (int k = 1; k < faces; ++k) worst_step = std::max(worst_step, drop_at(t_face[k - 1]) - drop_at(t_face[k]));
     if (faces > 1)
         r.metrics.push_back(at_most("largest rise between face crossings", "m", worst_step, 0.0, 0.0,
-                                    "monotonic descent face by face (physics.md d)"));
-    // within a tumble the cube may hop (physics.md): reported, not judged
+                                    "monotonic descent face by face"));
+    // within a tumble the cube may hop: reported, not judged
     double lowest = z.y[0], rise = 0.0, excess = -1e300;
     const double ke0 = s[0].energy.kinetic;
     for (size_t i = 0; i < n_on; ++i) {
@@ -89,7 +89,7 @@ CaseAnalysis analyse_rolling(const Scene& scene, const std::vector<Sample>& s, C
         excess = std::max(excess, s[i].energy.kinetic - ke0 - m * g * (z.y[0] - z.y[i]));
     }
     r.metrics.push_back(info("largest hop of the centre of mass", "m", rise, NAN,
-                             "climb above its lowest point so far (the cube hops, physics.md d)"));
+                             "climb above its lowest point so far (the cube hops)"));
     r.metrics.push_back(at_most("kinetic energy above the bound", "J", excess, 0.0, 0.01 * m * g * drop_ref,
                                 "KE ≤ KE0 + m g (height lost); 1 % of one face's m g drop"));
     return r;

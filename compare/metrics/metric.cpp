@@ -11,21 +11,23 @@ double Metric::relative_error() const {
 }
 
 bool Metric::pass() const {
-    if (check == Check::info) return true;
+    if (!judged()) return true;
     if (!measured || !std::isfinite(value)) return false;
     switch (check) {
         case Check::relative: return std::abs(value - reference) <= tolerance * std::abs(reference);
         case Check::absolute: return std::abs(value - reference) <= tolerance;
         case Check::at_most: return value <= reference + tolerance;
         case Check::at_least: return value >= reference;
-        case Check::info: return true;
+        case Check::info:
+        case Check::not_comparable: return true;
     }
     return false;
 }
 
 const char* Metric::verdict() const {
     if (check == Check::info) return "info";
-    return pass() ? "pass" : "MISS";
+    if (check == Check::not_comparable) return "not comparable";
+    return pass() ? "pass" : "miss";
 }
 
 std::string Metric::tolerance_text() const {
@@ -35,7 +37,8 @@ std::string Metric::tolerance_text() const {
         case Check::absolute: std::snprintf(buf, sizeof buf, "± %.3g %s", tolerance, unit.c_str()); break;
         case Check::at_most: std::snprintf(buf, sizeof buf, "≤ ref + %.3g %s", tolerance, unit.c_str()); break;
         case Check::at_least: std::snprintf(buf, sizeof buf, "≥ ref"); break;
-        case Check::info: return "-";
+        case Check::info:
+        case Check::not_comparable: return "-";
     }
     return buf;
 }
@@ -74,6 +77,9 @@ Metric at_least(std::string name, std::string unit, double value, double bound, 
 }
 Metric info(std::string name, std::string unit, double value, double reference, std::string basis) {
     return make(std::move(name), std::move(unit), value, reference, 0.0, Check::info, std::move(basis));
+}
+Metric not_comparable(std::string name, std::string unit, double value, double reference, std::string reason) {
+    return make(std::move(name), std::move(unit), value, reference, 0.0, Check::not_comparable, std::move(reason));
 }
 Metric missing(std::string name, std::string unit, double reference, double tol, Check check,
                std::string basis) {

@@ -12,6 +12,7 @@ enum class Check {
     at_most,    ///< value ≤ reference + tolerance (a bound)
     at_least,   ///< value ≥ reference
     info,       ///< reported, not judged (no analytic reference holds)
+    not_comparable,   ///< the reference does not model what this variant does (basis: the reason)
 };
 
 /// A measured number against its reference.
@@ -28,9 +29,11 @@ struct Metric {
 
     /// (value − reference)/|reference|; 0 when there is no reference or it is 0
     double relative_error() const;
-    /// true when the check holds (info metrics always pass)
+    /// true when the check holds (info and not-comparable metrics are never misses)
     bool pass() const;
-    /// "pass", "MISS" or "info"
+    /// true when the metric is judged (neither info nor not comparable)
+    bool judged() const { return check != Check::info && check != Check::not_comparable; }
+    /// "pass", "miss", "not comparable" or "info"
     const char* verdict() const;
     /// the tolerance as text: "1 %", "≤ 2e-02 m", "≥ 1", "-"
     std::string tolerance_text() const;
@@ -49,6 +52,9 @@ Metric at_most(std::string name, std::string unit, double value, double bound, d
 Metric at_least(std::string name, std::string unit, double value, double bound, std::string basis);
 /// a reported number without a check; `reference` optional (NaN = none)
 Metric info(std::string name, std::string unit, double value, double reference, std::string basis);
+/// a number the reference cannot judge for this variant: `reason` says what the reference does not
+/// model (e.g. an undamped reference for a dissipative contact); `reference` shown if finite
+Metric not_comparable(std::string name, std::string unit, double value, double reference, std::string reason);
 /// a metric whose event never happened in the run (e.g. no impact): a miss with a note
 Metric missing(std::string name, std::string unit, double reference, double tol, Check check,
                std::string basis);

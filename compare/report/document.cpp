@@ -1,5 +1,6 @@
 #include "report/document.hpp"
 
+#include <cctype>
 #include <sstream>
 
 #include "report/text.hpp"
@@ -56,13 +57,27 @@ std::string md_cell(const std::string& s) {
 std::string esc(const std::string& s) { return html_text(s); }
 
 const char* cell_class(const std::string& s) {
-    if (s.rfind("MISS", 0) == 0 || s.rfind("failed", 0) == 0 || s.rfind("unstable", 0) == 0) return " class=\"miss\"";
+    if (s.rfind("miss", 0) == 0 || s.rfind("failed", 0) == 0 || s.rfind("unstable", 0) == 0) return " class=\"miss\"";
     if (s.rfind("pass", 0) == 0) return " class=\"pass\"";
-    if (s.rfind("cannot", 0) == 0) return " class=\"na\"";
+    if (s.rfind("cannot", 0) == 0 || s.rfind("not comparable", 0) == 0 || s.rfind("n.c.", 0) == 0) return " class=\"na\"";
     return "";
 }
 
+std::string link_of(const Table& t, size_t row, size_t col) {
+    if (row >= t.links.size() || col >= t.links[row].size()) return "";
+    return t.links[row][col];
+}
+
 }  // namespace
+
+std::string anchor_of(const std::string& heading) {
+    std::string a;
+    for (unsigned char c : heading) {
+        if (c == ' ') a += '-';
+        else if (std::isalnum(c) || c == '-' || c == '_') a += char(std::tolower(c));
+    }
+    return a;
+}
 
 std::string to_markdown(const Document& d) {
     std::ostringstream o;
@@ -81,9 +96,14 @@ std::string to_markdown(const Document& d) {
                 o << "\n|";
                 for (size_t i = 0; i < b.table.header.size(); ++i) o << "---|";
                 o << "\n";
-                for (const auto& r : b.table.rows) {
+                for (size_t ri = 0; ri < b.table.rows.size(); ++ri) {
+                    const auto& r = b.table.rows[ri];
                     o << "|";
-                    for (const auto& c : r) o << " " << md_cell(c) << " |";
+                    for (size_t ci = 0; ci < r.size(); ++ci) {
+                        const std::string link = link_of(b.table, ri, ci);
+                        if (link.empty()) o << " " << md_cell(r[ci]) << " |";
+                        else o << " [" << md_cell(r[ci]) << "](#" << anchor_of(link) << ") |";
+                    }
                     o << "\n";
                 }
                 o << "\n";
@@ -108,7 +128,7 @@ std::string to_html(const Document& d) {
     for (const auto& b : d.blocks) {
         switch (b.kind) {
             case Block::Kind::heading:
-                o << "<h" << b.level << ">" << esc(b.text) << "</h" << b.level << ">\n";
+                o << "<h" << b.level << " id=\"" << esc(anchor_of(b.text)) << "\">" << esc(b.text) << "</h" << b.level << ">\n";
                 break;
             case Block::Kind::paragraph: o << "<p>" << esc(b.text) << "</p>\n"; break;
             case Block::Kind::bullets:
@@ -120,9 +140,16 @@ std::string to_html(const Document& d) {
                 o << "<table>\n<tr>";
                 for (const auto& h : b.table.header) o << "<th>" << esc(h) << "</th>";
                 o << "</tr>\n";
-                for (const auto& r : b.table.rows) {
+                for (size_t ri = 0; ri < b.table.rows.size(); ++ri) {
+                    const auto& r = b.table.rows[ri];
                     o << "<tr>";
-                    for (const auto& c : r) o << "<td" << cell_class(c) << ">" << esc(c) << "</td>";
+                    for (size_t ci = 0; ci < r.size(); ++ci) {
+                        const std::string link = link_of(b.table, ri, ci);
+                        o << "<td" << cell_class(r[ci]) << ">";
+                        if (link.empty()) o << esc(r[ci]);
+                        else o << "<a href=\"#" << esc(anchor_of(link)) << "\">" << esc(r[ci]) << "</a>";
+                        o << "</td>";
+                    }
                     o << "</tr>\n";
                 }
                 o << "</table>\n";

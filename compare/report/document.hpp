@@ -3,15 +3,26 @@
 /// (report.md) and as a self-contained HTML page (index.html), so the two never disagree.
 
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace cairn::report {
 
 /// A table: header and rows of text cells.
 struct Table {
+    Table() = default;
+    Table(std::vector<std::string> h, std::vector<std::vector<std::string>> r,
+          std::vector<std::vector<std::string>> l = {})
+        : header(std::move(h)), rows(std::move(r)), links(std::move(l)) {}
     std::vector<std::string> header;
     std::vector<std::vector<std::string>> rows;
+    /// optional per cell: the heading the cell links to (its text, see anchor_of); empty = no link
+    std::vector<std::vector<std::string>> links;
 };
+
+/// the anchor of a heading: lowercase, spaces to '-', only letters, digits, '-' and '_' kept (as
+/// Markdown renderers make it; the HTML page gives its headings the same id)
+std::string anchor_of(const std::string& heading);
 
 /// One block of the document.
 struct Block {
@@ -40,7 +51,7 @@ void append(Document& into, const Document& from, const std::string& image_prefi
 
 /// Markdown text of the document
 std::string to_markdown(const Document& d);
-/// a self-contained HTML page; cells starting with "MISS" or "pass" are coloured
+/// a self-contained HTML page; cells starting with "miss", "pass" or "not comparable" are coloured
 std::string to_html(const Document& d);
 
 }  // namespace cairn::report

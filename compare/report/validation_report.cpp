@@ -19,7 +19,7 @@ const metrics::Metric* worst(const CaseRun& r) {
     const metrics::Metric* w = nullptr;
     double score = -1.0;
     for (const auto& m : r.analysis.metrics) {
-        if (m.check == metrics::Check::info) continue;
+        if (!m.judged()) continue;
         double s = !m.measured ? 1e300
                    : m.check == metrics::Check::relative && m.tolerance > 0
                        ? std::abs(m.relative_error()) / m.tolerance
@@ -49,15 +49,30 @@ std::string run_verdict(const CaseRun& r) {
     if (r.outcome == Outcome::refused) return "cannot represent";
     if (r.outcome == Outcome::failed) return "failed";
     if (!r.analysed) return r.outcome == Outcome::unstable ? "unstable" : "no metrics";
-    int checked = 0, missed = 0;
+    int checked = 0, missed = 0, nc = 0;
     for (const auto& m : r.analysis.metrics) {
-        if (m.check == metrics::Check::info) continue;
+        if (m.check == metrics::Check::not_comparable) ++nc;
+        if (!m.judged()) continue;
         ++checked;
         if (!m.pass()) ++missed;
     }
-    std::string v = missed ? "MISS " + std::to_string(missed) + "/" + std::to_string(checked)
-                           : "pass " + std::to_string(checked) + "/" + std::to_string(checked);
+    std::string v = missed    ? "miss " + std::to_string(missed) + "/" + std::to_string(checked)
+                    : checked ? "pass " + std::to_string(checked) + "/" + std::to_string(checked)
+                              : "not comparable";
+    if (checked && nc) v += ", " + std::to_string(nc) + " not comparable";
     if (r.outcome == Outcome::unstable) v += " (unstable)";
+    return v;
+}
+
+std::string verdict_cell(const CaseRun& r) {
+    const std::string v = run_verdict(r);
+    int nc = 0;
+    if (r.analysed)
+        for (const auto& m : r.analysis.metrics) nc += m.check == metrics::Check::not_comparable;
+    const std::string tail = nc ? " (" + std::to_string(nc) + " n.c.)" : "";
+    if (v.rfind("pass", 0) == 0) return "pass" + tail;
+    if (v.rfind("miss", 0) == 0) return "miss" + tail;
+    if (v.rfind("not comparable", 0) == 0) return "n.c.";
     return v;
 }
 
@@ -80,7 +95,9 @@ std::string summary_csv(const std::vector<CaseResult>& cases) {
                 o << head << report::csv_field(m.name) << "," << report::csv_field(m.unit) << "," << (m.measured ? number_text(m.value) : "") << ","
                   << (m.has_reference ? number_text(m.reference) : "") << ","
                   << (m.has_reference && m.measured && m.reference != 0.0 ? number_text(m.relative_error()) : "") << ","
-                  << report::csv_field(m.tolerance_text()) << "," << m.verdict() << tail;
+                  << report::csv_field(m.tolerance_text()) << ","
+                  << (m.check == metrics::Check::not_comparable ? report::csv_field("not comparable: " + m.basis) : std::string(m.verdict()))
+                  << tail;
             };
             for (const auto& m : r.analysis.metrics) row(m);
             for (const auto& m : r.diffs) row(m);

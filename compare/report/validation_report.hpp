@@ -26,8 +26,14 @@ struct ReportContext {
     std::string command;                         ///< the command line, for reproduction
 };
 
-/// verdict of a run: "pass", "MISS", "cannot represent", "failed", "unstable", "no metrics"
+/// verdict of a run: "pass k/k" (", n not comparable" when some metrics are), "miss j/k", "not
+/// comparable" (no metric its references can judge), "cannot represent", "failed", "unstable",
+/// "no metrics"
 std::string run_verdict(const validation::CaseRun& r);
+
+/// the verdict grid's cell of a run: "pass", "miss" (each followed by " (n n.c.)" when n metrics are
+/// not comparable), "n.c.", or the run's outcome
+std::string verdict_cell(const validation::CaseRun& r);
 
 /// the metric of a run that misses by the most (relative to its tolerance), as one line; the
 /// message for a run without metrics

@@ -2,10 +2,20 @@
 
 namespace cairn::validation {
 
+cases::ContactKind contact_kind(const Variant& v, const Scene& scene) {
+    cases::ContactKind k;
+    k.penalty = v.penalty();
+    k.point_springs = v.backend == "dem";
+    if (v.model == "deformable" && scene.reference) {
+        k.divisions = scene.blocks.at(scene.reference->block).mesh.divisions;
+    }
+    return k;
+}
+
 const std::vector<std::string>& paper_cases() {
     static const std::vector<std::string> names = {
-        "stability", "impact", "impact_damped", "friction_slide", "friction_stick", "rolling",
-        "rocking", "rocking_damped_02", "rocking_damped_04", "rocking_slender"};
+        "stability", "impact", "impact_damped", "friction_slide", "friction_stick", "friction_stick_base", "rolling",
+        "rocking", "rocking_damped_02", "rocking_damped_04", "rocking_slender", "rocking_housner"};
     return names;
 }
 

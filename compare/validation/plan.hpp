@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include "cases/case_analysis.hpp"
 #include "scene/scene.hpp"
 
 namespace cairn::validation {
@@ -20,6 +21,10 @@ struct Variant {
     /// true when the contact is a penalty spring (dem, or an engine in matched mode)
     bool penalty() const { return backend == "dem" || contact_mode == "matched"; }
 };
+
+/// the contact a variant's runs have, for the case analyses (the reference block's mesh divisions
+/// across its base come from `scene` when the variant is deformable)
+cases::ContactKind contact_kind(const Variant& v, const Scene& scene);
 
 /// the paper's validation cases, in report order (scene names under scenarios/paper/)
 const std::vector<std::string>& paper_cases();

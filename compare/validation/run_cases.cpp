@@ -81,7 +81,7 @@ void execute(CaseRun& run, const fs::path& dir, const Scene& case_scene, const s
     }
     try {
         if (run.samples.size() >= 3) {
-            run.analysis = cases::analyse_case(scene, run.samples, {run.variant.penalty()});
+            run.analysis = cases::analyse_case(scene, run.samples, contact_kind(run.variant, scene));
             run.analysed = true;
         }
     } catch (const std::exception& e) {

@@ -10,7 +10,7 @@ const std::vector<ReferenceKind>& reference_kinds() {
         {"stick", {"force"}},                                  // horizontal force (N), holds
         {"incline", {"angle"}},                                // plane angle (rad)
         {"rolling", {"slope"}},                                // slope angle (rad)
-        {"housner", {"theta0", "axis_x", "axis_y", "axis_z"}}, // release tilt (rad), rocking axis
+        {"housner", {"theta0", "axis_x", "axis_y", "axis_z", "impacts"}}, // release tilt (rad), rocking axis, impacts judged on a calibrated damped contact
     };
     return kinds;
 }

@@ -142,8 +142,11 @@ for k, (t, path) in enumerate(series(out, "impact")):
     check(abs(m.cell_data["velocity"][0][0][2] + G * t) < 1e-12, f"t={t}: block velocity differs from -g t")
 
 # 4. the reference engines' contact points: A resting on B (no gap) for 0.5 s; at rest the forces
-# on A add up to its weight m·g = 2600 kg · 9.81 m/s² (measured to 1e-15 relative; bound 1e-9, the
-# solvers' residual at rest)
+# on A add up to its weight m·g = 2600 kg · 9.81 m/s², to the residual of each engine's solver:
+# Bullet and MuJoCo converge at rest (measured 1e-15 relative; bound 1e-9); ODE's default
+# QuickStep stops after 50 Gauss-Seidel sweeps (measured 4e-5 vertical, 1.6e-4 lateral; bound
+# 1e-3). A wrong sign, frame or division by the step would be off by the whole weight.
+RESIDUAL = {"bullet": 1e-9, "ode": 1e-3, "mujoco": 1e-9}
 listed = subprocess.run([CAIRN, "list"], capture_output=True, text=True).stdout
 for backend in ("bullet", "ode", "mujoco"):
     if backend not in listed:
@@ -160,7 +163,8 @@ for backend in ("bullet", "ode", "mujoco"):
     on_a = np.where(a == 0, 1.0, -1.0)[:, None] * (c.point_data["normal_force"] + c.point_data["shear_force"])
     total = on_a.sum(axis=0)
     weight = 2600 * G
-    check(abs(total[2] - weight) < 1e-9 * weight and np.abs(total[:2]).max() < 1e-9 * weight,
+    bound = RESIDUAL[backend] * weight
+    check(abs(total[2] - weight) < bound and np.abs(total[:2]).max() < bound,
           f"{backend}: forces on A {total} N, weight {weight} N")
     check(np.all(np.abs(c.points[:, 2]) < 1e-3), f"{backend}: contact points off the joint plane z = 0")
 

@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "analytic/oracles.hpp"
+#include "analytic/winkler_block.hpp"
 #include "dem_test_util.hpp"
 #include "support/scene_builder.hpp"
 
@@ -92,21 +93,28 @@ TEST_CASE("paper case (c): mu = 0.6 holds; H at the contact plane gives exactly 
         CHECK(sum / n == Approx(u_ref).epsilon(0.03));
         CHECK(b->sample().energy.dissipated == 0.0);  // never slipped
     }
-    SECTION("H at the centroid (the paper's scene): the moment lifts the heel, which slips a little, then it holds") {
-        // at kn = 3e7 the moment H·0.25 m tilts the block by ~2.6e-3 rad, lifting the heel by
-        // 0.6 mm > the static penetration 0.43 mm; heel points lose their friction and the
-        // toe points take the shear: the block settles at about 2 u_ref and stays there
-        Scene s = friction_scene(0.6, pull, 0.2);
+    SECTION("H at the centroid (the paper's scene): the heel lifts and slips; the base shear of a Winkler block") {
+        // e = H·0.25/W = 0.125 m > B/6: contact over c = 3(B/2 − e) = 0.375 m, and the lightly pressed
+        // points near the heel slip: u = (μ kn/ks)·d_max·[1 − √(1 − H/(μW))] = 4.025e-4 m
+        // (docs/validation.md). That reference is quasi-static: H ramps over 8 s on springs damped
+        // at ζ = 0.5 (the scene friction_stick.toml)
+        Scene s = friction_scene(0.6, pull, 8.0);
+        s.contact.damping_rule = ContactDampingRule::ratio;
+        s.contact.damping = 0.5;
+        const oracle::WinklerBlock wb{0.5, 0.5, 3e7, 3e7, 0.6, m * 9.81};
+        const double u_winkler = wb.shear_displacement(pull, 0.25);
+        REQUIRE(u_winkler == Approx(1.894 * u_ref).epsilon(1e-3));
         auto b = test::build_dem(s);
         const double x0 = b->sample().probes[0].x();
-        double u_1s = 0.0;
-        test::run_dem(*b, 3.0, [&](const Sample& smp) {
-            if (u_1s == 0.0 && smp.t >= 1.0) u_1s = smp.probes[0].x() - x0;
+        double u_9s = 0.0;
+        test::run_dem(*b, 10.0, [&](const Sample& smp) {
+            if (u_9s == 0.0 && smp.t >= 9.0) u_9s = smp.probes[0].x() - x0;
         });
-        const double u_3s = b->sample().probes[0].x() - x0;
-        CHECK(u_3s < 3.0 * u_ref);
-        // no creep: between 1 s and 3 s it moves less than a tenth of the elastic displacement
-        CHECK(std::abs(u_3s - u_1s) < 0.1 * u_ref);
+        const double u_10s = b->sample().probes[0].x() - x0;
+        // 3 %: the 6 × 6 hitting grid samples the triangular pressure (measured −1.6 %)
+        CHECK(u_10s == Approx(u_winkler).epsilon(0.03));
+        // no creep under the constant load: less than 1 % of u over the last second
+        CHECK(std::abs(u_10s - u_9s) < 0.01 * u_winkler);
     }
 }
 

@@ -21,10 +21,7 @@ constexpr double g = 9.81;
 // build `scene` on `engine` and step it for `duration` seconds, calling `each` after every step
 std::unique_ptr<Backend> run(const std::string& engine, const Scene& scene, const std::string& mode,
                              double duration, const std::function<void(const Sample&)>& each = {}) {
-    auto backend = make_backend(engine);
-    RunOptions options;
-    options.contact_mode = mode;
-    backend->build(scene, options);
+    auto backend = build_backend(engine, scene, mode);
     const long long steps = std::llround(duration / backend->time_step());
     for (long long i = 0; i < steps; ++i) {
         if (backend->step() != StepStatus::ok) FAIL(engine << " unstable: " << backend->failure());
@@ -69,6 +66,7 @@ TEST_CASE("every backend: matched contact rests at mg/(kn A)", "[engines]") {
     const double expected = 2600.0 * g / (3e7 * 1.0);   // 8.502e-4 m
     const double penetration = -bottom_height(end, 0.5);
     CAPTURE(penetration, expected);
+    WARN(engine << " matched rest: " << penetration << " m (" << (penetration - expected) / expected * 100 << " %)");
     // the issue's criterion: within 2 % of the penalty spring's static deflection
     CHECK(penetration == Approx(expected).epsilon(0.02));
     CHECK(end.contacts > 0);
@@ -90,6 +88,7 @@ TEST_CASE("reference engines: rigid inelastic 10 cm drop does not rebound", "[en
         highest_after = std::max(highest_after, h);
     });
     CAPTURE(lowest, highest_after);
+    WARN(engine << " rigid drop: lowest " << lowest << " m, highest after impact " << highest_after << " m");
     // the issue's criterion: rebound height under 1 mm
     CHECK(highest_after < 1e-3);
     // and the block did land (not sunk through or floating): within 1 cm of the base
@@ -125,10 +124,12 @@ TEST_CASE("reference engines: H = 0.5 W slides at mu = 0.4 and holds at mu = 0.6
     if (mu == 0.4) {
         const double a = 2.0 * normal.ldlt().solve(rhs)[2];
         CAPTURE(a);
+        WARN(engine << " sliding at H = 0.5 W, mu = 0.4: a = " << a << " m/s^2");
         // the issue's criterion: a = (H/W - mu) g = 0.1 g within 2 %
         CHECK(a == Approx(0.1 * g).epsilon(0.02));
     } else {
         CAPTURE(y_end);
+        WARN(engine << " holding at H = 0.5 W, mu = 0.6: slip " << y_end << " m in 0.5 s");
         // holding: H = 0.5 W < 0.6 W; a velocity-level solver may creep a little: 0.1 mm over 0.5 s
         CHECK(std::abs(y_end) < 1e-4);
     }
@@ -150,6 +151,7 @@ TEST_CASE("reference engines: slender rigid block first impact at Housner's t1",
         previous_t = x.t;
     });
     CAPTURE(impact, t1, (impact - t1) / t1);
+    WARN(engine << " rocking " << ratio << " alpha: t1 " << impact << " s (" << (impact - t1) / t1 * 100 << " %)");
     // the issue's criterion: within 1 % of the exact rigid-body value
     CHECK(impact == Approx(t1).epsilon(0.01));
 }

@@ -58,6 +58,14 @@ std::vector<std::string> all_backend_names() {
     return names;
 }
 
+std::unique_ptr<Backend> build_backend(const std::string& engine, const Scene& scene, const std::string& mode) {
+    auto backend = make_backend(engine);
+    RunOptions options;
+    options.contact_mode = mode;
+    backend->build(scene, options);
+    return backend;
+}
+
 double angle_about_y(const Quat& q) {
     Mat3 r = q.toRotationMatrix();
     return std::atan2(r(0, 2), r(2, 2));

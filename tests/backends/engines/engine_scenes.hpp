@@ -1,9 +1,11 @@
 #pragma once
 // scenes built in code for the reference-engine tests (no scene file needed)
 
+#include <memory>
 #include <string>
 #include <vector>
 
+#include "backend/backend.hpp"
 #include "scene/scene.hpp"
 #include "scene/scene_builder.hpp"
 
@@ -28,6 +30,9 @@ std::vector<std::string> engine_names();
 
 /// every backend built into this binary, the in-house dem included
 std::vector<std::string> all_backend_names();
+
+/// a backend `engine` built for `scene` in contact mode `mode` ("rigid" or "matched")
+std::unique_ptr<Backend> build_backend(const std::string& engine, const Scene& scene, const std::string& mode);
 
 /// rotation angle about y of a rotation that is a pure y rotation, rad
 double angle_about_y(const Quat& q);

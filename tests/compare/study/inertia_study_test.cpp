@@ -40,7 +40,9 @@ const std::vector<StudyPoint>& study_points() {
 TEST_CASE("study: the engine's assembled I_O matches the closed forms for n = 1, 2", "[study][slow]") {
     int checked = 0;
     for (const auto& p : study_points()) {
-        if (p.scheme == "rigid") continue;
+        // corrected sets its rotational inertia to the exact one: comparing it would read back the
+        // target (its dynamics are judged by the first impact below and in the dem mass tests)
+        if (p.scheme == "rigid" || p.scheme == "corrected") continue;
         INFO(p.case_name << " " << p.scheme << " n = " << p.n);
         // DeformableBody::inertia() and the closed form are both exact for a box: 1e-9 is round-off
         // (the CSV keeps 10 significant digits)
@@ -48,7 +50,7 @@ TEST_CASE("study: the engine's assembled I_O matches the closed forms for n = 1,
         CHECK(p.io_ratio == Approx(p.io_closed_form).epsilon(1e-9));
         ++checked;
     }
-    CHECK(checked == 3 * 4 * 2);
+    CHECK(checked == 3 * 3 * 2);
 }
 
 TEST_CASE("study: barycentre rocks early, lumped late, consistent and corrected on time", "[study][slow]") {

@@ -26,8 +26,9 @@ TEST_CASE("I_O ratios of the four schemes follow the closed forms for n = 1, 2, 
     // both sides are exact for a box (quadrature exact, closed forms exact): 1e-12 is round-off
     for (const Vec3& size : {Vec3(0.7, 0.2, 1.0), Vec3(0.2, 0.7, 1.0)})
         for (int n : {1, 2, 4})
-            for (MassScheme s : {MassScheme::barycentre, MassScheme::lumped, MassScheme::consistent,
-                                 MassScheme::corrected}) {
+            // (corrected sets I to the exact value: comparing it would read back its target; its
+            // dynamics are checked against m L²/6 in the dem mass tests)
+            for (MassScheme s : {MassScheme::barycentre, MassScheme::lumped, MassScheme::consistent}) {
                 INFO("size " << size.transpose() << ", n = " << n << ", scheme " << to_string(s));
                 // [n,1,n]: n × n in the rocking plane; the division along the axis does not enter I_O
                 CHECK(edge_ratio(size, {n, 1, n}, s) == Approx(closed_form_edge_ratio(s, n)).epsilon(1e-12));
@@ -41,7 +42,6 @@ TEST_CASE("the closed forms name the paper's defect: 3/4 and 3/2 of I_O with one
     CHECK(closed_form_edge_ratio(MassScheme::barycentre, 1) == Approx(0.75025).epsilon(1e-14));
     CHECK(closed_form_edge_ratio(MassScheme::lumped, 1) == 1.5);
     CHECK(closed_form_edge_ratio(MassScheme::lumped, 2) == 1.125);
-    CHECK(closed_form_edge_ratio(MassScheme::corrected, 1) == 1.0);
 }
 
 TEST_CASE("centre inertia per direction: (1 − 1/n²) barycentre, (1 + 2/n²) lumped", "[study]") {

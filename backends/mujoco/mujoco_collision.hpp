@@ -1,0 +1,36 @@
+#pragma once
+/// MuJoCo 2.2.2's mesh collider gives one contact per pair, so a face-on-face joint of general
+/// hexahedra hinges; box-mesh and mesh-mesh pairs of a cairn model go through cairn's
+/// face-clipping collider (common/hexahedron_contact) instead, through MuJoCo's collision table.
+
+#include <mujoco/mujoco.h>
+
+#include <vector>
+
+#include "rigid_blocks.hpp"
+
+namespace cairn {
+
+/// the blocks behind a model's geoms, for the collider
+struct MujocoHexahedra {
+    const mjModel* model = nullptr;            ///< the model these geoms belong to
+    std::vector<const RigidBlock*> geom_block; ///< block per geom id (null: not a block)
+};
+
+/// puts cairn's collider into mjCOLLISIONFUNC for box-mesh and mesh-mesh pairs (once per process);
+/// models other than the one made current fall through to MuJoCo's own function
+void install_hexahedron_collider();
+
+/// makes `h` the model the collider serves on this thread until the returned guard goes out of scope
+class CurrentHexahedra {
+public:
+    explicit CurrentHexahedra(const MujocoHexahedra* h);
+    ~CurrentHexahedra();
+    CurrentHexahedra(const CurrentHexahedra&) = delete;
+    CurrentHexahedra& operator=(const CurrentHexahedra&) = delete;
+
+private:
+    const MujocoHexahedra* previous_;
+};
+
+}  // namespace cairn
