@@ -91,6 +91,16 @@ struct BenchOptions {
 /// `cairn bench trade|stability|wall|all`
 int bench_command(const std::string& which, const BenchOptions& options);
 
+/// Options of `cairn replay`.
+struct ReplayOptions {
+    std::vector<std::string> run_dirs;   ///< directories written by `cairn run`, one view each
+    std::string out = "replay.html";     ///< the page
+    std::string title;                   ///< page title; empty = "cairn replay"
+};
+
+/// `cairn replay`: the 3-D replay page of several runs side by side
+int replay_command(const ReplayOptions& options);
+
 /// true when stderr is a terminal (progress lines make sense)
 bool stderr_is_terminal();
 

@@ -33,10 +33,18 @@ int main(int argc, char** argv) {
         ->check(CLI::IsMember({"rigid", "deformable"}));
     run->add_option("--contact", job.contact, "contact mode of the reference engines")
         ->check(CLI::IsMember({"rigid", "matched"}));
+    run->add_flag("--vtk", job.vtk, "also write the run for ParaView into DIR/vtk/ (docs/visualisation.md)");
+    run->add_flag("--replay", job.replay, "also write the interactive 3-D replay DIR/replay.html");
     run->add_flag("--quiet,-q", quiet, "no progress line and no summary");
     add_limit_options(*run, job.limits);
 
     app.add_subcommand("list", "list the shipped scenes and the backends with their capabilities");
+
+    ReplayOptions replay;
+    auto* replay_cmd = app.add_subcommand("replay", "the 3-D replay of runs side by side, one HTML page (docs/visualisation.md)");
+    replay_cmd->add_option("runs", replay.run_dirs, "directories written by cairn run")->required();
+    replay_cmd->add_option("--out,-o", replay.out, "the page to write (default replay.html)");
+    replay_cmd->add_option("--title", replay.title, "page title");
 
     RunAllOptions all;
     auto* run_all = app.add_subcommand("run-all", "run every shipped scene on every backend");
@@ -144,6 +152,7 @@ int main(int argc, char** argv) {
     try {
         if (app.got_subcommand(run)) return run_command(job, quiet);
         if (app.got_subcommand("list")) return list_command();
+        if (app.got_subcommand(replay_cmd)) return replay_command(replay);
         if (app.got_subcommand(run_all)) return run_all_command(all);
         if (study_inertia->parsed()) return study_inertia_command(inertia);
         if (app.got_subcommand(validate)) return validate_command(val);

@@ -13,6 +13,7 @@
 #include "output/trajectory_csv.hpp"
 #include "registry.hpp"
 #include "run/runner.hpp"
+#include "run_views.hpp"
 #include "scene/scene_io.hpp"
 #include "scenes.hpp"
 
@@ -69,6 +70,7 @@ JobOutcome execute_run(const RunJob& job) {
     std::unique_ptr<Backend> backend;
     RunRequest request;
     std::unique_ptr<StagedDir> out;
+    std::unique_ptr<RunViews> views;
     try {
         request.scene_path = resolve_scene(job.scene);
         std::vector<Override> overrides;
@@ -78,9 +80,10 @@ JobOutcome execute_run(const RunJob& job) {
         backend = make_backend(job.backend);
         if (job.contact != "rigid" && job.contact != "matched")
             throw Error("--contact " + job.contact + ": expected rigid or matched");
+        views = std::make_unique<RunViews>(scene, *backend, job.backend, job.vtk, job.replay);
         out = std::make_unique<StagedDir>(job.out_dir, job.force);
         // --force replaces a run's own files; anything else in DIR comes along (hard links)
-        out->carry_over({kTrajectory, kPartial, kRecord}, StagedDir::Carry::link);
+        out->carry_over({kTrajectory, kPartial, kRecord, kVtkDir, kReplayPage}, StagedDir::Carry::link);
     } catch (const Error& e) {
         o.status = JobStatus::input_error;
         o.message = e.what();
@@ -90,6 +93,7 @@ JobOutcome execute_run(const RunJob& job) {
     request.model_override = job.model;
     request.options.contact_mode = job.contact;
     request.options.limits = job.limits;
+    request.options.record_contacts = job.vtk;
 
     // the trajectory streams into the staging directory as the run goes; the set (trajectory and
     // run.json, written last) replaces DIR only when complete
@@ -98,9 +102,13 @@ JobOutcome execute_run(const RunJob& job) {
     RunResult result;
     // on a terminal, a progress line: simulated time, steps/s, time left
     ProgressLine progress(job.label, scene.run.duration);
-    TeeSink sink({&csv, &progress});
     try {
-        result = run_scene(*backend, scene, request.options, job.progress ? static_cast<SampleSink&>(sink) : csv,
+        // the 3-D views (--vtk, --replay) take the samples beside the trajectory
+        views->open(dir.string());
+        TeeSink sinks({&csv, views.get(), &progress});
+        TeeSink quiet_sinks({&csv, views.get()});
+        result = run_scene(*backend, scene, request.options,
+                           job.progress ? static_cast<SampleSink&>(sinks) : quiet_sinks,
                            job.progress ? progress.function() : ProgressFn{});
     } catch (const Error& e) {
         o.status = JobStatus::refused;   // nothing written: the staging directory goes

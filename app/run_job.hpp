@@ -21,6 +21,8 @@ struct RunJob {
     bool progress = false;                ///< show a progress line on stderr
     std::string label;                    ///< name shown in the progress line
     RunLimits limits;                     ///< --allow-large, --allow-unstable-dt, --memory-budget
+    bool vtk = false;                     ///< write the VTK series for ParaView into out_dir/vtk/
+    bool replay = false;                  ///< write the 3-D replay page out_dir/replay.html
 };
 
 /// How a run ended.

@@ -16,7 +16,14 @@ packages=(
   libbenchmark-dev                   # benchmarks of kernels
   gnuplot-nox                        # figures of the report
   libbullet-dev libode-dev libmujoco-dev   # reference engines
+  python3-meshio                     # test: VTK files read back by an independent reader
+  chromium                           # test: the 3-D replay rendered headless
 )
+# the 3-D replay bundles three.js from the npm registry at build time: node and npm, from Debian
+# unless a node with its own npm is already there (Debian's npm conflicts with such a node)
+if ! command -v npm >/dev/null 2>&1; then
+  packages+=(nodejs npm)
+fi
 # OpenMP comes with g++ (libgomp); no other package is needed for it.
 
 missing=()

@@ -63,6 +63,19 @@ protected:
     }
 };
 
+// call f(manifold, point) for every manifold point in contact (distance not positive)
+template <class F>
+void for_each_touching_point(const btDynamicsWorld& world, F&& f) {
+    btDispatcher* d = const_cast<btDynamicsWorld&>(world).getDispatcher();
+    for (int m = 0; m < d->getNumManifolds(); ++m) {
+        const btPersistentManifold* pm = d->getManifoldByIndexInternal(m);
+        for (int i = 0; i < pm->getNumContacts(); ++i) {
+            const btManifoldPoint& p = pm->getContactPoint(i);
+            if (!(p.getDistance() > 0.0)) f(*pm, p);
+        }
+    }
+}
+
 class BulletBackend : public Backend {
 public:
     std::string name() const override { return "bullet"; }
@@ -77,6 +90,7 @@ public:
     Sample sample() const override;
     std::string failure() const override { return failure_; }
     std::vector<std::string> notes() const override { return notes_; }
+    std::vector<ContactPoint> contact_points() const override;
 
 private:
     void clear();
@@ -284,20 +298,32 @@ Sample BulletBackend::sample() const {
         s.probes.push_back(block_point_world(b, eig(body->getCenterOfMassPosition()), q, p.point));
     }
     s.energy.external = external_work_;
-    const btDispatcher* d = world_->getDispatcher();
-    for (int m = 0; m < d->getNumManifolds(); ++m) {
-        const btPersistentManifold* pm = const_cast<btDispatcher*>(d)->getManifoldByIndexInternal(m);
-        for (int i = 0; i < pm->getNumContacts(); ++i) {
-            const btManifoldPoint& p = pm->getContactPoint(i);
-            if (p.getDistance() > 0.0) continue;
-            ++s.contacts;
-            if (matched_) {
-                double k = p.m_combinedContactStiffness1;
-                s.energy.contact += 0.5 * k * p.getDistance() * p.getDistance();
-            }
+    for_each_touching_point(*world_, [&](const btPersistentManifold&, const btManifoldPoint& p) {
+        ++s.contacts;
+        if (matched_) {
+            double k = p.m_combinedContactStiffness1;
+            s.energy.contact += 0.5 * k * p.getDistance() * p.getDistance();
         }
-    }
+    });
     return s;
+}
+
+// the manifold points in contact; forces are the last step's solver impulses over the step
+std::vector<ContactPoint> BulletBackend::contact_points() const {
+    std::vector<ContactPoint> out;
+    for_each_touching_point(*world_, [&](const btPersistentManifold& pm, const btManifoldPoint& p) {
+        ContactPoint c;
+        c.position = eig(p.m_positionWorldOnB);
+        c.normal = eig(p.m_normalWorldOnB);   // from body 1 towards body 0
+        // the solver pushes body 0 along the normal and the friction directions
+        c.normal_force = (p.m_appliedImpulse / dt_) * c.normal;
+        c.shear_force = (p.m_appliedImpulseLateral1 * eig(p.m_lateralFrictionDir1) +
+                         p.m_appliedImpulseLateral2 * eig(p.m_lateralFrictionDir2)) / dt_;
+        c.block_a = pm.getBody0()->getUserIndex();
+        c.block_b = pm.getBody1()->getUserIndex();
+        out.push_back(c);
+    });
+    return out;
 }
 
 }  // namespace

@@ -120,7 +120,7 @@ ContactTotals ContactSet::apply(std::vector<Block>& blocks, double dt) {
             evaluate(blocks, dt, lo, hi, true);
         }
     } else {
-        evaluate(blocks, dt, 0, count, false);
+        evaluate(blocks, dt, 0, count, keep_forces_);
     }
     // spread the kept forces and add up, in the candidates' order
     ContactTotals tot;

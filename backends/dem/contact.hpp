@@ -62,6 +62,8 @@ public:
     const std::vector<Candidate>& candidates() const { return candidates_; }
     /// broad-phase margin, m
     double margin() const { return margin_; }
+    /// keep every point's force in its candidate (Candidate::forces) also on one thread, for output
+    void keep_forces(bool keep) { keep_forces_ = keep; }
 
 private:
     /// candidates [begin, end): forces (kept in the candidate, or spread at once), anchors, totals
@@ -69,6 +71,7 @@ private:
 
     ContactLaw law_;
     double margin_ = 0.0;
+    bool keep_forces_ = false;
     std::vector<Candidate> candidates_;
     // buffers kept between refreshes so that a steady state allocates nothing
     std::vector<Candidate> previous_;

@@ -30,6 +30,7 @@ public:
                     min_edge = std::min(min_edge, (def.corners[kFaceCorners[s][(i + 1) % 4]] - def.corners[kFaceCorners[s][i]]).norm());
         margin_ = scene_.run.contact_margin ? *scene_.run.contact_margin : 0.05 * min_edge;
         world_ = std::make_unique<dem::World>(scene_, margin_);
+        world_->record_contacts(options.record_contacts);
         contact_critical_ = dem::contact_critical_step(world_->blocks(), scene_.contact);
         element_critical_ = dem::element_critical_step(world_->blocks());
         critical_ = contact_critical_;
@@ -87,6 +88,18 @@ public:
     }
 
     std::string failure() const override { return failure_; }
+
+    std::vector<ContactPoint> contact_points() const override { return world_->contact_points(); }
+
+    BlockMesh block_mesh(int block) const override {
+        BlockMesh m;
+        const auto& b = world_->blocks()[size_t(block)];
+        if (!b.deformable) return m;
+        m.nodes = b.x;
+        m.velocities = b.v;
+        m.elements = b.mesh.elements;
+        return m;
+    }
 
     std::vector<std::string> notes() const override {
         std::vector<std::string> n;

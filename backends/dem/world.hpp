@@ -8,6 +8,7 @@
 #include "block.hpp"
 #include "block_builder.hpp"
 #include "contact.hpp"
+#include "backend/backend.hpp"
 #include "scene/scene.hpp"
 
 namespace cairn::dem {
@@ -44,6 +45,11 @@ public:
     Vec3 probe(int i) const { return world_position(blocks_[probes_[i].block], probes_[i]); }
     /// active contact points after the last force evaluation
     int active_contacts() const { return active_; }
+    /// keep per-point contact forces for contact_points(); call before start()
+    void record_contacts(bool on) { contacts_.keep_forces(on); }
+    /// penetrating hitting points of the last force evaluation with their forces (empty unless
+    /// record_contacts(true)); block_a is the hitting block, the normal that of the target face
+    std::vector<ContactPoint> contact_points() const;
     /// contact refreshes forced early because a block moved more than half the margin
     int early_refreshes() const { return early_refreshes_; }
     /// element updates done so far (deformable blocks)

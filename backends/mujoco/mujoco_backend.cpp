@@ -52,6 +52,7 @@ public:
     Sample sample() const override;
     std::string failure() const override { return failure_; }
     std::vector<std::string> notes() const override { return notes_; }
+    std::vector<ContactPoint> contact_points() const override;
 
 private:
     void clear() {
@@ -381,6 +382,44 @@ Sample MujocoBackend::sample() const {
             s.energy.contact += 0.5 * pair_spring(c).stiffness * overlap * overlap;
         }
     return s;
+}
+
+// the contacts of the last step with the constraint forces MuJoCo found for them
+std::vector<ContactPoint> MujocoBackend::contact_points() const {
+    // geom -> block: the world body's geoms are the fixed blocks in scene order (as written in the
+    // model), every other geom is its body's block
+    std::vector<int> block_of_geom(size_t(m_->ngeom), -1);
+    size_t next_fixed = 0;
+    std::vector<int> fixed;
+    for (const RigidBlock& b : blocks_)
+        if (b.fixed) fixed.push_back(b.index);
+    for (int g = 0; g < m_->ngeom; ++g) {
+        const int body = m_->geom_bodyid[g];
+        if (body == 0) {
+            if (next_fixed < fixed.size()) block_of_geom[g] = fixed[next_fixed++];
+            continue;
+        }
+        for (size_t k = 0; k < blocks_.size(); ++k)
+            if (!blocks_[k].fixed && body_[k] == body) block_of_geom[g] = int(k);
+    }
+    std::vector<ContactPoint> out;
+    for (int i = 0; i < d_->ncon; ++i) {
+        const mjContact& c = d_->contact[i];
+        mjtNum f[6];
+        mj_contactForce(m_, d_, i, f);   // in the contact frame: normal, then the two tangents
+        const Vec3 n(c.frame[0], c.frame[1], c.frame[2]);   // from geom 1 towards geom 2
+        const Vec3 t1(c.frame[3], c.frame[4], c.frame[5]), t2(c.frame[6], c.frame[7], c.frame[8]);
+        ContactPoint p;
+        p.position = Vec3(c.pos[0], c.pos[1], c.pos[2]);
+        p.normal = n;
+        // the force pushes geom 2 along the normal: geom 2 is block a
+        p.normal_force = f[0] * n;
+        p.shear_force = f[1] * t1 + f[2] * t2;
+        p.block_a = block_of_geom[c.geom2];
+        p.block_b = block_of_geom[c.geom1];
+        out.push_back(p);
+    }
+    return out;
 }
 
 }  // namespace

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstdarg>
 #include <cstdio>
+#include <deque>
 #include <stdexcept>
 #include <memory>
 #include <sstream>
@@ -67,6 +68,7 @@ public:
     Sample sample() const override;
     std::string failure() const override { return failure_; }
     std::vector<std::string> notes() const override { return notes_; }
+    std::vector<ContactPoint> contact_points() const override;
 
 private:
     static void near_callback(void* self, dGeomID a, dGeomID b);
@@ -95,6 +97,12 @@ private:
     double external_work_ = 0.0;
     double contact_energy_ = 0.0;
     int contact_count_ = 0;
+    // the last step's contacts, kept when RunOptions::record_contacts: geometry, blocks (a, b),
+    // whether a is fixed (ODE then reports the force on b), and the joint's force feedback
+    bool record_contacts_ = false;
+    struct Recorded { dContactGeom geom; int a, b; bool a_fixed; };
+    std::vector<Recorded> recorded_;
+    std::deque<dJointFeedback> feedback_;   // a deque: joints keep pointers to its elements
     bool faulted_ = false;   // an ODE error stopped the run; the world is abandoned
     Sample frozen_;          // the last state before the fault
     std::string failure_;
@@ -147,6 +155,7 @@ void OdeBackend::build(const Scene& scene, const RunOptions& options) {
     contact_count_ = 0;
     EngineSettings settings(scene_, "ode");
     matched_ = contact_mode(settings, options) == "matched";
+    record_contacts_ = options.record_contacts;
     // QuickStep by default: dWorldStep's direct LCP lets a block creep near its friction limit
     // (a cube on a 45 degree slope at mu = 1.1 slides 32 mm in 1 s; docs/backends.md)
     std::string stepper = settings.word("stepper", "quickstep", {"auto", "step", "quickstep"});
@@ -263,6 +272,28 @@ void OdeBackend::build(const Scene& scene, const RunOptions& options) {
         }
 }
 
+// the last step's contact joints with the forces they applied
+std::vector<ContactPoint> OdeBackend::contact_points() const {
+    std::vector<ContactPoint> out;
+    if (faulted_) return out;   // the step that faulted has no trustworthy forces
+    for (size_t i = 0; i < recorded_.size(); ++i) {
+        const Recorded& r = recorded_[i];
+        ContactPoint c;
+        c.position = Vec3(r.geom.pos[0], r.geom.pos[1], r.geom.pos[2]);
+        c.normal = Vec3(r.geom.normal[0], r.geom.normal[1], r.geom.normal[2]);   // moves geom 1 (a) out
+        const dJointFeedback& f = feedback_[i];
+        // f1 is the force on the joint's first body: a, or b when a is fixed (ODE swaps them)
+        Vec3 force_on_a(f.f1[0], f.f1[1], f.f1[2]);
+        if (r.a_fixed) force_on_a = -force_on_a;
+        c.normal_force = force_on_a.dot(c.normal) * c.normal;
+        c.shear_force = force_on_a - c.normal_force;
+        c.block_a = r.a;
+        c.block_b = r.b;
+        out.push_back(c);
+    }
+    return out;
+}
+
 void OdeBackend::near_callback(void* self, dGeomID a, dGeomID b) {
     static_cast<OdeBackend*>(self)->collide(a, b);
 }
@@ -341,6 +372,11 @@ void OdeBackend::collide(dGeomID ga, dGeomID gb) {
         }
         dJointID j = dJointCreateContact(world_, contacts_, &c[i]);
         dJointAttach(j, ba, bb);
+        if (record_contacts_) {
+            feedback_.emplace_back();
+            dJointSetFeedback(j, &feedback_.back());
+            recorded_.push_back({c[i].geom, int(a.index), int(b.index), ba == nullptr});
+        }
         ++contact_count_;
     }
 }
@@ -379,6 +415,8 @@ StepStatus OdeBackend::step() {
     double p0 = load_power();
     contact_energy_ = 0.0;
     contact_count_ = 0;
+    recorded_.clear();
+    feedback_.clear();
     try {
         dSpaceCollide(space_, this, &OdeBackend::near_callback);
         if (quickstep_) dWorldQuickStep(world_, dt_);

@@ -3,6 +3,8 @@
 #include <cctype>
 #include <sstream>
 
+#include "report/text.hpp"
+
 namespace cairn::report {
 
 void Document::heading(int level, std::string text) {
@@ -58,19 +60,7 @@ std::string md_cell(const std::string& s) {
     return o;
 }
 
-std::string esc(const std::string& s) {
-    std::string o;
-    for (char c : s) {
-        switch (c) {
-            case '<': o += "&lt;"; break;
-            case '>': o += "&gt;"; break;
-            case '&': o += "&amp;"; break;
-            case '"': o += "&quot;"; break;
-            default: o += c;
-        }
-    }
-    return o;
-}
+std::string esc(const std::string& s) { return html_text(s); }
 
 const char* cell_class(const std::string& s) {
     if (s.rfind("miss", 0) == 0 || s.rfind("failed", 0) == 0 || s.rfind("unstable", 0) == 0) return " class=\"miss\"";

@@ -56,4 +56,19 @@ std::vector<std::string> split_csv_line(const std::string& line) {
     return f;
 }
 
+std::string html_text(const std::string& s) {
+    std::string o;
+    for (char c : s) {
+        switch (c) {
+            case '<': o += "&lt;"; break;
+            case '>': o += "&gt;"; break;
+            case '&': o += "&amp;"; break;
+            case '"': o += "&quot;"; break;
+            case '\'': o += "&#39;"; break;
+            default: o += c;
+        }
+    }
+    return o;
+}
+
 }  // namespace cairn::report

@@ -14,6 +14,8 @@ std::string percent_text(double relative);
 std::string fixed_text(double v, int decimals);
 /// a CSV field, quoted when it holds a comma, a quote or a newline (newlines become spaces)
 std::string csv_field(const std::string& s);
+/// text safe inside HTML element content and quoted attribute values (& < > " ' escaped)
+std::string html_text(const std::string& s);
 /// the fields of one CSV line; a quoted field may hold commas and "" for a quote
 std::vector<std::string> split_csv_line(const std::string& line);
 

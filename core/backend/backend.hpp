@@ -2,6 +2,7 @@
 /// The one interface every backend implements (in-house DEM, Bullet, ODE, MuJoCo).
 /// A backend owns all of its mutable state; the scene it is built from is read-only.
 
+#include <array>
 #include <memory>
 #include <string>
 #include <vector>
@@ -17,6 +18,7 @@ namespace cairn {
 struct RunOptions {
     std::string contact_mode = "rigid";   ///< reference engines: "rigid" or "matched"
     RunLimits limits;                     ///< what the run may cost (steps, rows, memory, dt)
+    bool record_contacts = false;         ///< keep per-point contact forces for contact_points()
 };
 
 /// Pose and velocity of one free block, world frame.
@@ -48,6 +50,23 @@ struct Sample {
     int contacts = 0;                 ///< active contact points (or engine contacts)
 };
 
+/// One contact point and the force it carries, world frame.
+struct ContactPoint {
+    Vec3 position = Vec3::Zero();      ///< the point, m
+    Vec3 normal = Vec3::UnitZ();       ///< unit contact normal, from block_b towards block_a
+    Vec3 normal_force = Vec3::Zero();  ///< normal part of the force on block_a, N
+    Vec3 shear_force = Vec3::Zero();   ///< tangential (friction) part of the force on block_a, N
+    int block_a = -1;                  ///< Scene::blocks index of one block (-1: unknown)
+    int block_b = -1;                  ///< Scene::blocks index of the other (-1: unknown)
+};
+
+/// The current mesh of a deformable block, world frame.
+struct BlockMesh {
+    std::vector<Vec3> nodes;                    ///< node positions, m
+    std::vector<Vec3> velocities;               ///< node velocities, m/s (one per node)
+    std::vector<std::array<int, 8>> elements;   ///< node indices in hex8 corner order
+};
+
 /// Result of advancing one step.
 enum class StepStatus { ok, unstable };
 
@@ -73,6 +92,10 @@ public:
     virtual std::string failure() const { return {}; }
     /// approximations made for this scene and the parameters actually used, as "key: value" lines
     virtual std::vector<std::string> notes() const { return {}; }
+    /// contact points of the current state with their forces, N (default: none exposed)
+    virtual std::vector<ContactPoint> contact_points() const { return {}; }
+    /// current mesh of Scene::blocks[block] when the block is deformable; empty otherwise (default)
+    virtual BlockMesh block_mesh(int block) const { (void)block; return {}; }
 };
 
 }  // namespace cairn

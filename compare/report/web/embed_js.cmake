@@ -1,0 +1,12 @@
+# cmake -P embed_js.cmake IN=bundle.js OUT=file.cpp: the bundle as a C++ string constant
+file(READ "${IN}" js)
+string(FIND "${js}" ")cairnjs\"" clash)
+if(NOT clash EQUAL -1)
+  message(FATAL_ERROR "${IN} contains the raw-string delimiter )cairnjs\"")
+endif()
+string(FIND "${js}" "</script" closes)
+if(NOT closes EQUAL -1)
+  message(FATAL_ERROR "${IN} contains </script and cannot be inlined in a page")
+endif()
+file(WRITE "${OUT}.tmp" "// generated from ${IN} by embed_js.cmake: do not edit\nnamespace cairn {\nextern const bool kReplayAvailable = true;\nextern const char* const kReplayBundleJs = R\"cairnjs(${js})cairnjs\";\n}  // namespace cairn\n")
+file(RENAME "${OUT}.tmp" "${OUT}")
