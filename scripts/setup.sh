@@ -16,6 +16,7 @@ packages=(
   libbenchmark-dev                   # benchmarks of kernels
   gnuplot-nox                        # figures of the report
   libbullet-dev libode-dev libmujoco-dev   # reference engines
+  clang-14 libclang-rt-14-dev libfuzzer-14-dev   # the clang build and the fuzzer (docs/development.md)
 )
 # OpenMP comes with g++ (libgomp); no other package is needed for it.
 
