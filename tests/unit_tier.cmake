@@ -3,7 +3,7 @@
 # after the discovered tests (their lists are test_core_TESTS, ...); run with `ctest -L unit`.
 # Left out: anything that runs engines for seconds (test_dem, test_engines, the study end to end,
 # validate end to end).
-foreach(t IN LISTS test_core_TESTS)
+foreach(t IN LISTS test_core_TESTS test_fuzz_TESTS)
   set_tests_properties("${t}" PROPERTIES LABELS unit)
 endforeach()
 foreach(t IN LISTS test_compare_TESTS)

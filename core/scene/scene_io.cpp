@@ -38,7 +38,11 @@ void apply_override(toml::table& root, const Override& o, scene_detail::Sources&
         parsed = toml::parse(text, std::string(origin));
     } catch (const toml::parse_error&) {
         text = "v = " + quoted(o.value);
-        parsed = toml::parse(text, std::string(origin));
+        try {
+            parsed = toml::parse(text, std::string(origin));
+        } catch (const toml::parse_error& e) {   // e.g. a control character or invalid UTF-8
+            throw Error(origin + ": the value is neither TOML nor a plain string: " + std::string(e.description()));
+        }
     }
     src.add(origin, text);
 
