@@ -18,6 +18,7 @@ packages=(
   libbullet-dev libode-dev libmujoco-dev   # reference engines
   python3-meshio                     # test: VTK files read back by an independent reader
   chromium                           # test: the 3-D replay rendered headless
+  clang-14 libclang-rt-14-dev libfuzzer-14-dev   # the clang build and the fuzzer (docs/development.md)
 )
 # the 3-D replay bundles three.js from the npm registry at build time: node and npm, from Debian
 # unless a node with its own npm is already there (Debian's npm conflicts with such a node)

@@ -64,17 +64,18 @@ std::vector<std::string> write_pareto_figures(const std::string& dir, const std:
         write_text_atomic((fig / (name + ".dat")).string(), dat.str());
         std::ostringstream gp;
         gp << "set terminal " << report::gnuplot_png_terminal() << " size 900,620 font ',11'\n"
-           << "set output '" << name << ".png'\nset logscale xy\nset grid\nset key outside right top\n"
+           << "set output " << report::gnuplot_file(name + ".png") << "\nset logscale xy\nset grid\nset key outside right top\n"
            << "set format y '%g'\nset format x '%g'\n"
-           << "set title '" << c << ": error against the oracle vs wall time (median of repeats)' noenhanced\n"
+           << "set title " << report::gnuplot_string(c + ": error against the oracle vs wall time (median of repeats)")
+           << " noenhanced\n"
            << "set xlabel 'wall time of the run, s'\nset ylabel '|relative error|, % (floored at 1e-5 %)'\n"
            << "set arrow from graph 0, first 5 to graph 1, first 5 nohead dt 3 lc rgb 'gray'\n"
            << "set arrow from graph 0, first 1 to graph 1, first 1 nohead dt 3 lc rgb 'gray'\n"
            << "set arrow from graph 0, first 0.1 to graph 1, first 0.1 nohead dt 3 lc rgb 'gray'\nplot ";
         for (size_t i = 0; i < variants.size(); ++i)
-            gp << "'" << name << ".dat' index " << i << " using 1:2 with points pt 7 ps 1.3 lc rgb '" << colour(variants[i])
-               << "' title '" << variants[i] << "', ";
-        gp << "'" << name << ".dat' index " << variants.size()
+            gp << report::gnuplot_file(name + ".dat") << " index " << i << " using 1:2 with points pt 7 ps 1.3 lc rgb "
+               << report::gnuplot_string(colour(variants[i])) << " title " << report::gnuplot_string(variants[i]) << ", ";
+        gp << report::gnuplot_file(name + ".dat") << " index " << variants.size()
            << " using 1:2 with steps lw 2 lc rgb 'black' title 'Pareto front'\n";
         if (report::run_gnuplot(fig.string(), name, gp.str(), note)) out.push_back("figures/" + name + ".png");
     }
@@ -101,8 +102,9 @@ std::vector<std::string> write_stability_figures(const std::string& dir, const s
             for (const auto& p : points)
                 if (p.backend == b && p.parameter == params[r]) {
                     std::string label = p.value_text;
-                    for (char& ch : label)
+                    for (char& ch : label)   // a data-file string: no '"' inside, one line
                         if (ch == '"') ch = '\'';
+                        else if (static_cast<unsigned char>(ch) < 0x20) ch = ' ';
                     dat << col++ << " " << r << " " << int(p.cls) << " \"" << label << "\"\n";
                 }
             width = std::max(width, col);
@@ -111,14 +113,15 @@ std::vector<std::string> write_stability_figures(const std::string& dir, const s
         write_text_atomic((fig / (name + ".dat")).string(), dat.str());
         std::ostringstream gp;
         gp << "set terminal " << report::gnuplot_png_terminal() << " size 1000," << 120 + 55 * params.size() << " font ',11'\n"
-           << "set output '" << name << ".png'\nunset key\nunset colorbox\nset xtics scale 0 format ''\n"
+           << "set output " << report::gnuplot_file(name + ".png") << "\nunset key\nunset colorbox\nset xtics scale 0 format ''\n"
            << "set xrange [-0.5:" << width - 0.5 << "]\nset yrange [" << params.size() - 0.5 << ":-0.5]\n"
-           << "set title '" << b << ": green stable, red unstable, purple drifting, orange wrong, grey refused' noenhanced\n"
+           << "set title " << report::gnuplot_string(b + ": green stable, red unstable, purple drifting, orange wrong, grey refused")
+           << " noenhanced\n"
            << "set palette defined (0 '#2ca02c', 1 '#d62728', 2 '#9467bd', 3 '#ff9f1c', 4 '#b0b0b0')\n"
            << "set palette maxcolors 5\nset cbrange [-0.5:4.5]\nset style fill solid 1.0 border rgb 'white'\nset ytics (";
-        for (size_t r = 0; r < params.size(); ++r) gp << (r ? ", " : "") << "'" << params[r] << "' " << r;
+        for (size_t r = 0; r < params.size(); ++r) gp << (r ? ", " : "") << report::gnuplot_string(params[r]) << " " << r;
         gp << ") noenhanced\nset lmargin 16\n"
-           << "plot '" << name << ".dat' using 1:2:(0.5):(0.5):3 with boxxyerror fc palette, '' using 1:2:4 "
+           << "plot " << report::gnuplot_file(name + ".dat") << " using 1:2:(0.5):(0.5):3 with boxxyerror fc palette, '' using 1:2:4 "
            << "with labels noenhanced font ',10'\n";
         if (report::run_gnuplot(fig.string(), name, gp.str(), note)) out.push_back("figures/" + name + ".png");
     }

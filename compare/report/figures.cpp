@@ -78,11 +78,6 @@ std::string fixed_outline(const Scene& scene) {
     return o.str();
 }
 
-std::string quoted(const std::string& s) {
-    std::string o = "\"";
-    for (char c : s) o += c == '"' ? std::string("\\\"") : std::string(1, c);
-    return o + "\"";
-}
 
 }  // namespace
 
@@ -117,10 +112,10 @@ FigureSet write_figures(const std::vector<validation::CaseResult>& cases, const 
         std::sort(sorted.rbegin(), sorted.rend());
         const bool clip = sorted.size() > 1 && sorted[1] > 0.0 && sorted[0] > 3.0 * sorted[1];
         std::ostringstream gp;
-        gp << "set terminal " << term << "\nset output " << quoted(c.name + ".png") << "\n"
-           << "set multiplot title " << quoted(c.name + ": " + c.scene.description) << "\n"
+        gp << "set terminal " << term << "\nset output " << gnuplot_file(c.name + ".png") << "\n"
+           << "set multiplot title " << gnuplot_string(c.name + ": " + c.scene.description) << "\n"
            << "set grid\nset key outside right top\nset lmargin 12\nset rmargin 24\nset autoscale xfix\n"
-           << "set size 1,0.60\nset origin 0,0.37\nset ylabel " << quoted(runs.front()->analysis.quantity) << "\n"
+           << "set size 1,0.60\nset origin 0,0.37\nset ylabel " << gnuplot_string(runs.front()->analysis.quantity) << "\n"
            << "plot ";
         std::vector<std::string> lines;
         // each distinct reference curve once (rocking: rigid and penalty runs have different ones)
@@ -129,15 +124,15 @@ FigureSet write_figures(const std::vector<validation::CaseResult>& cases, const 
             if (r->analysis.analytic.empty()) continue;
             if (std::find(keys.begin(), keys.end(), r->analysis.analytic_key) != keys.end()) continue;
             keys.push_back(r->analysis.analytic_key);
-            lines.push_back(quoted(c.name + "_" + r->variant.name + ".dat") + " u 1:3 w l lw 3 lc rgb '" +
+            lines.push_back(gnuplot_file(c.name + "_" + r->variant.name + ".dat") + " u 1:3 w l lw 3 lc rgb '" +
                             (keys.size() == 1 ? "black" : "#777777") + "' dt " + std::to_string(keys.size() + 1) +
-                            " t " + quoted(r->analysis.analytic_key));
+                            " t " + gnuplot_string(r->analysis.analytic_key));
         }
         for (size_t i = 0; i < runs.size(); ++i) {
             const std::string file = c.name + "_" + runs[i]->variant.name + ".dat";
             write_text_atomic((fig / file).string(), curve_data(*runs[i], runs.front()));
-            lines.push_back(quoted(file) + " u 1:2 w l lw 1.5 lc rgb '" + variant_colour(runs[i]->variant.name) +
-                            "' t " + quoted(runs[i]->variant.name));
+            lines.push_back(gnuplot_file(file) + " u 1:2 w l lw 1.5 lc rgb '" + variant_colour(runs[i]->variant.name) +
+                            "' t " + gnuplot_string(runs[i]->variant.name));
         }
         for (size_t i = 0; i < lines.size(); ++i) gp << (i ? ", \\\n     " : "") << lines[i];
         std::string dlabel = analytic ? "run - analytic" : "run - " + runs.front()->variant.name;
@@ -147,11 +142,11 @@ FigureSet write_figures(const std::vector<validation::CaseResult>& cases, const 
             gp << "\n" << b;
             dlabel += " (clipped)";
         }
-        gp << "\nset size 1,0.37\nset origin 0,0\nset xlabel 't (s)'\nset ylabel " << quoted(dlabel) << "\nplot ";
+        gp << "\nset size 1,0.37\nset origin 0,0\nset xlabel 't (s)'\nset ylabel " << gnuplot_string(dlabel) << "\nplot ";
         for (size_t i = 0; i < runs.size(); ++i)
-            gp << (i ? ", \\\n     " : "") << quoted(c.name + "_" + runs[i]->variant.name + ".dat")
+            gp << (i ? ", \\\n     " : "") << gnuplot_file(c.name + "_" + runs[i]->variant.name + ".dat")
                << " u 1:4 w l lw 1.5 lc rgb '" << variant_colour(runs[i]->variant.name) << "' t "
-               << quoted(runs[i]->variant.name);
+               << gnuplot_string(runs[i]->variant.name);
         gp << "\nunset multiplot\n";
         write_text_atomic((fig / (c.name + ".gp")).string(), gp.str());
         std::vector<std::string> images{"figures/" + c.name + ".png"};
@@ -164,15 +159,15 @@ FigureSet write_figures(const std::vector<validation::CaseResult>& cases, const 
             std::string big = term;
             const auto at = big.find("760");
             if (at != std::string::npos) big.replace(at, 3, "1150");
-            sg << "set terminal " << big << "\nset output " << quoted(c.name + "_snapshots.png") << "\n"
+            sg << "set terminal " << big << "\nset output " << gnuplot_file(c.name + "_snapshots.png") << "\n"
                << "set multiplot layout " << (n + 1) / 2 << "," << (n > 1 ? 2 : 1) << " title "
-               << quoted(c.name + ": A every 0.25 s (x-z projection)") << "\n"
+               << gnuplot_string(c.name + ": A every 0.25 s (x-z projection)") << "\n"
                << "set size ratio -1\nset xrange [-0.5:4.0]\nset yrange [-1.0:3.6]\nunset key\nset grid\n";
             for (const auto* r : runs) {
                 const std::string file = c.name + "_" + r->variant.name + "_snap.dat";
                 write_text_atomic((fig / file).string(), snapshot_data(c.scene, *r, 0.25, 16));
-                sg << "set title " << quoted(r->variant.name) << "\nplot " << quoted(c.name + "_fixed.dat")
-                   << " w filledcurves lc rgb '#cccccc', " << quoted(file) << " w l lw 1.2 lc rgb '#1f5fbf'\n";
+                sg << "set title " << gnuplot_string(r->variant.name) << "\nplot " << gnuplot_file(c.name + "_fixed.dat")
+                   << " w filledcurves lc rgb '#cccccc', " << gnuplot_file(file) << " w l lw 1.2 lc rgb '#1f5fbf'\n";
             }
             sg << "unset multiplot\n";
             write_text_atomic((fig / (c.name + "_snapshots.gp")).string(), sg.str());

@@ -52,9 +52,9 @@ std::string plot_schemes(const std::string& dat, const std::string& using_cols, 
     std::ostringstream o;
     o << "plot ";
     for (size_t i = 0; i < kSchemes.size(); ++i)
-        o << "'" << dat << "' index " << i << " using " << using_cols << " with linespoints ls " << i + 1
-          << " title '" << kSchemes[i] << "', ";
-    if (with_rigid_line) o << "'" << dat << "' index 4 using (1):4 with points ls 5 title 'rigid (n = 1 axis)'";
+        o << report::gnuplot_file(dat) << " index " << i << " using " << using_cols << " with linespoints ls "
+          << i + 1 << " title " << report::gnuplot_string(kSchemes[i]) << ", ";
+    if (with_rigid_line) o << report::gnuplot_file(dat) << " index 4 using (1):4 with points ls 5 title 'rigid (n = 1 axis)'";
     else o << "1/0 notitle";
     o << "\n";
     return o.str();
@@ -83,8 +83,8 @@ std::vector<std::string> write_inertia_figures(const std::string& dir, const std
         o << "set output 'inertia_error_n.png'\nset multiplot layout 1,3\nset logscale xy\nset xrange [0.8:10]\n"
           << "set xtics (1,2,4,8)\nset xlabel 'elements per side n'\nset format y '%g'\n";
         for (size_t i = 0; i < kCases.size(); ++i)
-            o << "set title '" << titles[i] << "'\nset ylabel '|" << (i < 2 ? "first-impact" : "bounce-period")
-              << " error| %'\n" << plot_schemes("inertia_" + kCases[i] + ".dat", "1:4", true);
+            o << "set title " << report::gnuplot_string(titles[i]) << "\nset ylabel '|"
+              << (i < 2 ? "first-impact" : "bounce-period") << " error| %'\n" << plot_schemes("inertia_" + kCases[i] + ".dat", "1:4", true);
         o << "unset multiplot\n";
         figures.push_back({"inertia_error_n", o.str()});
     }
@@ -93,8 +93,8 @@ std::vector<std::string> write_inertia_figures(const std::string& dir, const std
         o << "set output 'inertia_error_cost.png'\nset multiplot layout 1,3\nset logscale xy\n"
           << "set xlabel 'wall time per run, s (2 runs at a time on 2 cores)'\nset format y '%g'\n";
         for (size_t i = 0; i < kCases.size(); ++i)
-            o << "set title '" << titles[i] << "'\nset ylabel '|" << (i < 2 ? "first-impact" : "bounce-period")
-              << " error| %'\nset label 1 'along each line: n = 1, 2, 4, 8' at graph 0.02,0.05\n"
+            o << "set title " << report::gnuplot_string(titles[i]) << "\nset ylabel '|"
+              << (i < 2 ? "first-impact" : "bounce-period") << " error| %'\nset label 1 'along each line: n = 1, 2, 4, 8' at graph 0.02,0.05\n"
               << plot_schemes("inertia_" + kCases[i] + ".dat", "5:4", false);
         o << "unset multiplot\n";
         figures.push_back({"inertia_error_cost", o.str()});
@@ -106,10 +106,10 @@ std::vector<std::string> write_inertia_figures(const std::string& dir, const std
           << "set ylabel 'I_O / I_O,exact about the rocking edge'\nset key bottom right\n";
         for (size_t i = 0; i < 2; ++i) {
             const std::string dat = "inertia_" + kCases[i] + ".dat";
-            o << "set title '" << titles[i] << "'\nplot ";
+            o << "set title " << report::gnuplot_string(titles[i]) << "\nplot ";
             for (size_t s = 0; s < kSchemes.size(); ++s)
-                o << "'" << dat << "' index " << s << " using 1:2 with points ls " << s + 1 << " ps 1.5 title '"
-                  << kSchemes[s] << "', ";
+                o << report::gnuplot_file(dat) << " index " << s << " using 1:2 with points ls " << s + 1
+                  << " ps 1.5 title " << report::gnuplot_string(kSchemes[s]) << ", ";
             o << "1 - 1/(4*x**2) + 0.25e-3 lc rgb '#d62728' dt 3 title '1 - 1/(4n^2)', "
               << "1 + 1/(2*x**2) lc rgb '#1f77b4' dt 3 title '1 + 1/(2n^2)'\n";
         }

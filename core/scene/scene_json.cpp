@@ -83,8 +83,11 @@ nlohmann::json scene_to_json(const Scene& scene) {
     json backends = json::object();
     for (const auto& [name, settings] : scene.backend_settings) {
         json t = json::object();
-        for (const auto& [key, s] : settings)
-            std::visit([&](const auto& v) { t[key] = {{"value", v}, {"origin", s.origin}}; }, s.value);
+        for (const auto& entry : settings) {   // no structured binding: C++17 lambdas cannot capture one
+            const auto& key = entry.first;
+            const auto& origin = entry.second.origin;
+            std::visit([&](const auto& v) { t[key] = {{"value", v}, {"origin", origin}}; }, entry.second.value);
+        }
         backends[name] = t;
     }
     return {{"name", scene.name},

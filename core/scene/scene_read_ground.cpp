@@ -2,10 +2,14 @@
 // one inertial body load −m·a_g(t) per free block.
 #define CSV_IO_NO_THREAD
 #include <limits>   // libfccp's csv.h uses std::numeric_limits without including it
+#if defined(__GNUC__) && !defined(__clang__)   // a GCC-only warning; clang does not know it
 #pragma GCC diagnostic push
 #pragma GCC diagnostic ignored "-Wstringop-truncation"   // in the library's own error-name copy
+#endif
 #include <libfccp/csv.h>
+#if defined(__GNUC__) && !defined(__clang__)
 #pragma GCC diagnostic pop
+#endif
 
 #include <algorithm>
 #include <cmath>
