@@ -54,16 +54,6 @@ std::string difference_file(const std::string& variant, int free_block) {
 }
 std::string energy_file(const std::string& variant) { return "data/" + variant + "_energy.csv"; }
 
-std::string gnuplot_label(const std::string& s) {
-    std::string o;
-    for (unsigned char c : s) {
-        const bool keep = (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') ||
-                          std::string(" -_.,:()[]/+=").find(char(c)) != std::string::npos;
-        o += keep ? char(c) : '_';
-    }
-    return o;
-}
-
 void write_data(const std::vector<VariantHistories>& variants, int base, int max_blocks, const std::string& dir) {
     fs::create_directories(fs::path(dir) / "data");
     for (size_t v = 0; v < variants.size(); ++v) {
@@ -80,7 +70,8 @@ void write_data(const std::vector<VariantHistories>& variants, int base, int max
 
 namespace {
 
-std::string q(const std::string& s) { return "'" + gnuplot_label(s) + "'"; }
+/// text as a gnuplot string: scene and block names are untrusted
+std::string q(const std::string& s) { return report::gnuplot_string(s); }
 
 std::string header(const std::string& png, int height) {
     std::ostringstream o;

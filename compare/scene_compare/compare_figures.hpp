@@ -32,10 +32,6 @@ std::string history_file(const std::string& variant, int free_block);
 std::string difference_file(const std::string& variant, int free_block);
 std::string energy_file(const std::string& variant);
 
-/// text safe inside a single-quoted gnuplot string: letters, digits, space and - _ . , : ( ) [ ] / + =
-/// kept, anything else becomes '_' (scene names are untrusted)
-std::string gnuplot_label(const std::string& s);
-
 /// write the data files under DIR/data for the first `max_blocks` free blocks (the runs'
 /// trajectory.csv hold every block); `base` indexes the baseline in `variants` (-1 = none)
 void write_data(const std::vector<VariantHistories>& variants, int base, int max_blocks, const std::string& dir);

@@ -156,10 +156,7 @@ report::Document write_compare_report(const CaseResult& result, const CompareCon
                                       x.verdict()});
                 }
         d.table(m);
-        // validate's figure puts the description in its title: only gnuplot-safe characters of it
-        validation::CaseResult safe = result;
-        safe.scene.description = gnuplot_label(safe.scene.description);
-        const auto fig = report::write_figures({safe}, dir);
+        const auto fig = report::write_figures({result}, dir);
         if (!fig.note.empty()) figure_note += fig.note;
         const auto it = fig.images.find(result.name);
         if (it != fig.images.end())
