@@ -32,6 +32,7 @@ struct SubAnchor {
     Vec2 xi_hit = Vec2::Zero(); ///< natural coordinates of the material point on the hitting face
     Vec2 xi_target = Vec2::Zero();  ///< natural coordinates of the stick point on the target face
     double energy = 0.0;        ///< shear-spring energy at the last evaluation, J (dissipated on reset)
+    double area = 0.0;          ///< contact area at the last evaluation, m²
     bool seen = false;          ///< in contact at this evaluation
 };
 

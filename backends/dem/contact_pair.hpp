@@ -16,6 +16,10 @@ struct PairGeometry {
     std::array<Vec3, 6> centre;      ///< target sides' centres, m
     std::array<int, 6> best_side{};  ///< per target side: the hitting block's side most opposed to it (-1: none)
     std::array<char, 6> target_ok{}; ///< per target side: it is the target of that hitting side
+    /// overlap scheme, [hitting side][target side]: the sides face each other (normals opposed)
+    /// and the target side is the target; every side of the hitting block's lower surface seen
+    /// from a target side hits it, so their shadows tile the overlap without gap or double count
+    std::array<std::array<char, 6>, 6> faces{};
     double flush_tol = 0.0;          ///< a point this far outside a side plane is still over the side, m
     double closer_tol = 0.0;         ///< another side this much closer: the point enters through it, m
     /// the geometry of the pair (h hits t)
@@ -24,6 +28,12 @@ struct PairGeometry {
     bool acts(int hit_side) const {
         for (int s = 0; s < 6; ++s)
             if (best_side[s] == hit_side && target_ok[s]) return true;
+        return false;
+    }
+    /// overlap scheme: true when side `hit_side` of the hitting block faces some target side
+    bool faces_any(int hit_side) const {
+        for (int s = 0; s < 6; ++s)
+            if (faces[hit_side][s]) return true;
         return false;
     }
 };

@@ -27,7 +27,7 @@ int side_constraints(const PairGeometry& g, int s, int hit_side, std::array<Affi
         const Vec3& no = g.normal[o];
         const double co = no.dot(g.centre[o]);
         out[k++] = Affine{-no, co + g.flush_tol};
-        const bool shared = g.best_side[o] == hit_side && g.target_ok[o];
+        const bool shared = g.faces[hit_side][o];
         out[k++] = Affine{ns - no, co - cs + (shared ? 0.0 : g.closer_tol)};
     }
     return k;
@@ -55,7 +55,7 @@ void ContactSet::evaluate_overlap(std::vector<Block>& blocks, double dt, long be
             g.set(blocks, c.hit_block, c.target_block);
         }
         const int hit_side = hb.mesh.face_side[c.hit_face];
-        if (g.acts(hit_side)) {
+        if (g.faces_any(hit_side)) {
             const Quad hq = hb.face_quad(c.hit_face);
             Aabb hbox;
             for (const auto& p : hq) hbox.add(p);
@@ -64,7 +64,7 @@ void ContactSet::evaluate_overlap(std::vector<Block>& blocks, double dt, long be
                 for (int i = 0; i <= n; ++i) grid[j * (n + 1) + i] = quad_point(hq, Vec2(-1.0 + 2.0 * i / n, -1.0 + 2.0 * j / n));
             const auto [cn_area, ct_area] = dashpot_per_area(law_, hb, tb, hit_side);
             for (int s = 0; s < 6; ++s) {
-                if (g.best_side[s] != hit_side || !g.target_ok[s]) continue;
+                if (!g.faces[hit_side][s]) continue;
                 const int side_count = side_constraints(g, s, hit_side, cons);
                 for (int tf : tb.mesh.side_grid[s]) {
                     const Quad tq = tb.face_quad(tf);
@@ -124,6 +124,7 @@ void ContactSet::evaluate_overlap(std::vector<Block>& blocks, double dt, long be
                             tot.dissipated += (fn - fn_el) * closing * dt;
                             tot.stored += 0.5 * law_.kn * in.d2;
                             Vec3 fs = Vec3::Zero();
+                            NodeWeights sh_h, sh_t;
                             if (law_.ks > 0.0 && fn > 0.0) {
                                 // the material point of the hitting face (laid under the pressure
                                 // centre at first touch), its foot on the target plane, and its
@@ -137,7 +138,20 @@ void ContactSet::evaluate_overlap(std::vector<Block>& blocks, double dt, long be
                                 const Vec3 x0 = x0_face + nt.dot(ct - x0_face) * nt;
                                 Vec3 u_t = ph - x0;
                                 u_t -= u_t.dot(nt) * nt;
-                                const Vec3 vt_rel = vrel - vrel.dot(nt) * nt;
+                                // the spring's stiffness ks·A follows the contact area; its stick
+                                // point moves so that a change of area neither makes nor takes
+                                // spring energy (½ks·A·u² kept: u scaled by √(A_old/A))
+                                if (!lay && anchor->area > 0.0 && anchor->area != in.area) {
+                                    u_t *= std::sqrt(anchor->area / in.area);
+                                    anchor->xi_target = target_xi(ph - u_t);
+                                }
+                                anchor->area = in.area;
+                                // the shear pair acts at the material point whose offset it
+                                // measures, so its power is the rate of its spring energy
+                                sh_h = node_weights(hb, c.hit_face, xh);
+                                sh_t = node_weights(tb, tf, xh);
+                                const Vec3 vs = sh_h.velocity(hb) - sh_t.velocity(tb);
+                                const Vec3 vt_rel = vs - vs.dot(nt) * nt;
                                 const double ks_a = law_.ks * in.area;
                                 const Vec3 f_el = -ks_a * u_t;
                                 const double cap = law_.friction * fn;
@@ -146,7 +160,7 @@ void ContactSet::evaluate_overlap(std::vector<Block>& blocks, double dt, long be
                                     fs = cap * f_el / f_el.norm();
                                     const Vec3 moved = ph + fs / ks_a;
                                     anchor->xi_target = target_xi(moved);
-                                    tot.dissipated += fs.norm() * (moved - x0).norm();
+                                    tot.dissipated += fs.norm() * (moved - (ph - u_t)).norm();
                                     anchor->energy = 0.5 * fs.squaredNorm() / ks_a;
                                 } else {
                                     // stick: spring plus shear dashpot, trimmed so the sum stays ≤ μ·Fn
@@ -160,13 +174,18 @@ void ContactSet::evaluate_overlap(std::vector<Block>& blocks, double dt, long be
                                 // no normal force: the anchor is given up (re-laid at the next touch)
                                 tot.dissipated += std::max(0.0, anchor->energy);
                                 anchor->energy = -1.0;
+                                anchor->area = 0.0;
                             }
-                            const Vec3 force = fn * nt + fs;
                             if (keep_forces) {
-                                c.sub_forces.push_back({wh, wt, force});
+                                c.sub_forces.push_back({wh, wt, fn * nt});
+                                if (law_.ks > 0.0 && fn > 0.0) c.sub_forces.push_back({sh_h, sh_t, fs});
                             } else {
-                                wh.add(hb, force);
-                                wt.add(tb, -force);
+                                wh.add(hb, fn * nt);
+                                wt.add(tb, -fn * nt);
+                                if (law_.ks > 0.0 && fn > 0.0) {
+                                    sh_h.add(hb, fs);
+                                    sh_t.add(tb, -fs);
+                                }
                             }
                             ++tot.active;
                         }
