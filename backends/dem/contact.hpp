@@ -24,13 +24,12 @@ struct Anchor {
     double energy = 0.0;        ///< shear-spring energy at the last evaluation, J (dissipated on reset)
 };
 
-/// Stick anchor of one sub-contact of the overlap scheme: a material point of the hitting face
-/// tied to a point of the target face.
+/// Shear state of one sub-contact of the overlap scheme: the elastic offset of the stick spring,
+/// built up from the relative tangential motion at the sub-contact's pressure centre.
 struct SubAnchor {
     int cell = 0;               ///< sub-cell of the hitting face, v·n + u
     int target_face = 0;        ///< target boundary face
-    Vec2 xi_hit = Vec2::Zero(); ///< natural coordinates of the material point on the hitting face
-    Vec2 xi_target = Vec2::Zero();  ///< natural coordinates of the stick point on the target face
+    Vec3 u = Vec3::Zero();      ///< elastic shear offset, world, m
     double energy = 0.0;        ///< shear-spring energy at the last evaluation, J (dissipated on reset)
     double area = 0.0;          ///< contact area at the last evaluation, m²
     bool seen = false;          ///< in contact at this evaluation

@@ -68,7 +68,9 @@ void PairGeometry::set(const std::vector<Block>& blocks, int h, int t) {
             if (d < best) best = d, best_side[s] = f;
         }
         target_ok[s] = best_side[s] >= 0 && is_target(blocks, h, best_side[s], t, s);
-        for (int f = 0; f < 6; ++f) faces[f][s] = hn[f].dot(normal[s]) < 0.0 && is_target(blocks, h, f, t, s);
+        // a side within 1e-3 rad of perpendicular casts a shadow under 1e-3 of its height: left
+        // out, so that rounding never makes a side standing on the target a hitting side
+        for (int f = 0; f < 6; ++f) faces[f][s] = hn[f].dot(normal[s]) < -1e-3 && is_target(blocks, h, f, t, s);
     }
     // a hitting point up to 1e-4 of the edge outside a side plane still counts as over the
     // target side: flush edges (stacked blocks) stay in contact as they bulge

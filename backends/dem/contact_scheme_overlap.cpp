@@ -82,8 +82,6 @@ void ContactSet::evaluate_overlap(std::vector<Block>& blocks, double dt, long be
                         const Vec3 a = nt.cross(flat[(i + 1) % 4] - flat[i]).normalized();
                         cons[nc++] = Affine{a, -a.dot(flat[i])};
                     }
-                    const ParallelogramFrame frame = ParallelogramFrame::of(tq);
-                    auto target_xi = [&](const Vec3& x) { return frame.valid ? frame.project(x).xi : project(tq, x).xi; };
                     for (int v = 0; v < n; ++v)
                         for (int u = 0; u < n; ++u) {
                             ClipPolygon poly;
@@ -124,48 +122,34 @@ void ContactSet::evaluate_overlap(std::vector<Block>& blocks, double dt, long be
                             tot.dissipated += (fn - fn_el) * closing * dt;
                             tot.stored += 0.5 * law_.kn * in.d2;
                             Vec3 fs = Vec3::Zero();
-                            NodeWeights sh_h, sh_t;
                             if (law_.ks > 0.0 && fn > 0.0) {
-                                // the material point of the hitting face (laid under the pressure
-                                // centre at first touch), its foot on the target plane, and its
-                                // offset from the stick point there (laid at that foot: no offset)
+                                // the shear offset grows with the relative tangential motion at the
+                                // pressure centre over the step (the half-step velocity is the one
+                                // the positions drifted with); laid at zero on first touch
                                 const bool lay = fresh || anchor->energy < 0.0;
-                                if (lay) anchor->xi_hit = project(hq, xs).xi;
-                                const Vec3 xh = quad_point(hq, anchor->xi_hit);
-                                const Vec3 ph = xh + nt.dot(ct - xh) * nt;
-                                if (lay) anchor->xi_target = target_xi(ph);
-                                const Vec3 x0_face = quad_point(tq, anchor->xi_target);
-                                const Vec3 x0 = x0_face + nt.dot(ct - x0_face) * nt;
-                                Vec3 u_t = ph - x0;
-                                u_t -= u_t.dot(nt) * nt;
-                                // the spring's stiffness ks·A follows the contact area; its stick
-                                // point moves so that a change of area neither makes nor takes
-                                // spring energy (½ks·A·u² kept: u scaled by √(A_old/A))
-                                if (!lay && anchor->area > 0.0 && anchor->area != in.area) {
-                                    u_t *= std::sqrt(anchor->area / in.area);
-                                    anchor->xi_target = target_xi(ph - u_t);
-                                }
+                                if (lay) anchor->u.setZero();
+                                const Vec3 vt_rel = vrel - vrel.dot(nt) * nt;
+                                Vec3 u_t = anchor->u - anchor->u.dot(nt) * nt + vt_rel * dt;
+                                // the spring's stiffness ks·A follows the contact area; the offset
+                                // is scaled so that a change of area neither makes nor takes spring
+                                // energy (½ks·A·u² kept: u scaled by √(A_old/A))
+                                if (!lay && anchor->area > 0.0) u_t *= std::sqrt(anchor->area / in.area);
                                 anchor->area = in.area;
-                                // the shear pair acts at the material point whose offset it
-                                // measures, so its power is the rate of its spring energy
-                                sh_h = node_weights(hb, c.hit_face, xh);
-                                sh_t = node_weights(tb, tf, xh);
-                                const Vec3 vs = sh_h.velocity(hb) - sh_t.velocity(tb);
-                                const Vec3 vt_rel = vs - vs.dot(nt) * nt;
                                 const double ks_a = law_.ks * in.area;
                                 const Vec3 f_el = -ks_a * u_t;
                                 const double cap = law_.friction * fn;
                                 if (f_el.norm() > cap) {
-                                    // slip: the spring is capped at μ·Fn and its stick point follows
+                                    // slip: the spring is capped at μ·Fn, the offset shrinks to match
                                     fs = cap * f_el / f_el.norm();
-                                    const Vec3 moved = ph + fs / ks_a;
-                                    anchor->xi_target = target_xi(moved);
-                                    tot.dissipated += fs.norm() * (moved - (ph - u_t)).norm();
+                                    const Vec3 u_new = -fs / ks_a;
+                                    tot.dissipated += fs.norm() * (u_t - u_new).norm();
+                                    anchor->u = u_new;
                                     anchor->energy = 0.5 * fs.squaredNorm() / ks_a;
                                 } else {
                                     // stick: spring plus shear dashpot, trimmed so the sum stays ≤ μ·Fn
                                     fs = f_el - ct_area * in.area * vt_rel;
                                     if (fs.norm() > cap) fs *= cap / fs.norm();
+                                    anchor->u = u_t;
                                     anchor->energy = 0.5 * ks_a * u_t.squaredNorm();
                                     tot.dissipated -= (fs - f_el).dot(vt_rel) * dt;
                                 }
@@ -176,16 +160,12 @@ void ContactSet::evaluate_overlap(std::vector<Block>& blocks, double dt, long be
                                 anchor->energy = -1.0;
                                 anchor->area = 0.0;
                             }
+                            const Vec3 force = fn * nt + fs;
                             if (keep_forces) {
-                                c.sub_forces.push_back({wh, wt, fn * nt});
-                                if (law_.ks > 0.0 && fn > 0.0) c.sub_forces.push_back({sh_h, sh_t, fs});
+                                c.sub_forces.push_back({wh, wt, force});
                             } else {
-                                wh.add(hb, fn * nt);
-                                wt.add(tb, -fn * nt);
-                                if (law_.ks > 0.0 && fn > 0.0) {
-                                    sh_h.add(hb, fs);
-                                    sh_t.add(tb, -fs);
-                                }
+                                wh.add(hb, force);
+                                wt.add(tb, -force);
                             }
                             ++tot.active;
                         }
