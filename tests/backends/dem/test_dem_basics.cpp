@@ -80,7 +80,9 @@ TEST_CASE("energy balance closes for an undamped oscillation and a damped one", 
         const double scale = 2600 * 9.81 * 0.0127;
         CHECK(worst < (rule == ContactDampingRule::none ? 0.005 : 0.02) * scale);
         if (rule == ContactDampingRule::ratio) CHECK(diss > 0.5 * scale);
-        else CHECK(diss == 0.0);
+        // undamped: nothing dissipates but the shear springs given up when the block leaves the
+        // contact (booked as dissipated): their offsets are rounding, 1e-12 of the scale at most
+        else { INFO("dissipated " << diss << " J"); CHECK(std::abs(diss) < 1e-12 * scale); }
     }
 }
 
