@@ -51,6 +51,8 @@ bool is_target(const std::vector<Block>& blocks, int h, int hit_side, int t, int
 }
 
 void PairGeometry::set(const std::vector<Block>& blocks, int h, int t) {
+    hit = h;
+    target = t;
     const Block& hb = blocks[h];
     const Block& tb = blocks[t];
     std::array<Vec3, 6> hn;

@@ -22,8 +22,16 @@ struct PairGeometry {
     std::array<std::array<char, 6>, 6> faces{};
     double flush_tol = 0.0;          ///< a point this far outside a side plane is still over the side, m
     double closer_tol = 0.0;         ///< another side this much closer: the point enters through it, m
+    int hit = -1, target = -1;       ///< the pair it was set for (-1: none yet)
     /// the geometry of the pair (h hits t)
     void set(const std::vector<Block>& blocks, int h, int t);
+    /// set it for the pair unless already set for it (candidates of one pair come in a row);
+    /// true when it changed
+    bool update(const std::vector<Block>& blocks, int h, int t) {
+        if (h == hit && t == target) return false;
+        set(blocks, h, t);
+        return true;
+    }
     /// true when side `hit_side` of the hitting block hits some side of the target
     bool acts(int hit_side) const {
         for (int s = 0; s < 6; ++s)

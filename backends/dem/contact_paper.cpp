@@ -9,7 +9,6 @@ namespace cairn::dem {
 
 void ContactSet::evaluate_paper(std::vector<Block>& blocks, double dt, long begin, long end, bool keep_forces) {
     // the geometry of the (hitting, target) pair of the candidates at hand
-    int cached_h = -1, cached_t = -1;
     PairGeometry g;
     std::array<ParallelogramFrame, 6> frames;   // rigid parallelogram target sides: closed-form projection
     for (long ci = begin; ci < end; ++ci) {
@@ -24,10 +23,7 @@ void ContactSet::evaluate_paper(std::vector<Block>& blocks, double dt, long begi
             tot.dissipated += a.energy;
             a = Anchor{};
         };
-        if (c.hit_block != cached_h || c.target_block != cached_t) {
-            cached_h = c.hit_block;
-            cached_t = c.target_block;
-            g.set(blocks, c.hit_block, c.target_block);
+        if (g.update(blocks, c.hit_block, c.target_block)) {
             for (int s = 0; s < 6; ++s)
                 frames[s] = tb.mesh.side_grid[s].size() == 1 ? ParallelogramFrame::of(tb.side_quad(s)) : ParallelogramFrame{};
         }

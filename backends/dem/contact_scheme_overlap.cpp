@@ -36,7 +36,6 @@ int side_constraints(const PairGeometry& g, int s, int hit_side, std::array<Affi
 }  // namespace
 
 void ContactSet::evaluate_overlap(std::vector<Block>& blocks, double dt, long begin, long end, bool keep_forces) {
-    int cached_h = -1, cached_t = -1;
     PairGeometry g;
     const int n = std::clamp(law_.subdivision, 1, kMaxSubdivision);
     std::array<Vec3, (kMaxSubdivision + 1) * (kMaxSubdivision + 1)> grid;   // sub-cell corners
@@ -49,11 +48,7 @@ void ContactSet::evaluate_overlap(std::vector<Block>& blocks, double dt, long be
         Block& hb = blocks[c.hit_block];
         Block& tb = blocks[c.target_block];
         for (auto& a : c.subs) a.seen = false;
-        if (c.hit_block != cached_h || c.target_block != cached_t) {
-            cached_h = c.hit_block;
-            cached_t = c.target_block;
-            g.set(blocks, c.hit_block, c.target_block);
-        }
+        g.update(blocks, c.hit_block, c.target_block);
         const int hit_side = hb.mesh.face_side[c.hit_face];
         if (g.faces_any(hit_side)) {
             const Quad hq = hb.face_quad(c.hit_face);
@@ -82,6 +77,15 @@ void ContactSet::evaluate_overlap(std::vector<Block>& blocks, double dt, long be
                         const Vec3 a = nt.cross(flat[(i + 1) % 4] - flat[i]).normalized();
                         cons[nc++] = Affine{a, -a.dot(flat[i])};
                     }
+                    // the face lies in the hull of its corners: a constraint none of them meets
+                    // rules out every sub-cell at once (most candidate faces stop here)
+                    bool missed = false;
+                    for (int k = 0; k < nc && !missed; ++k) {
+                        bool none = true;
+                        for (const auto& p : hq) none = none && cons[k](p) < 0.0;
+                        missed = none;
+                    }
+                    if (missed) continue;
                     for (int v = 0; v < n; ++v)
                         for (int u = 0; u < n; ++u) {
                             ClipPolygon poly;
