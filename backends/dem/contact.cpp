@@ -61,6 +61,8 @@ void ContactSet::refresh(std::vector<Block>& blocks) {
 }
 
 ContactTotals ContactSet::apply(std::vector<Block>& blocks, double dt) {
+    frames_.resize(blocks.size());
+    for (size_t i = 0; i < blocks.size(); ++i) frames_[i] = SideFrames::of(blocks[i]);
     const long count = long(candidates_.size());
     // below a thousand hitting points a parallel region costs more than it saves (a single block
     // on its base has a few hundred): one thread then spreads the forces as it goes

@@ -99,6 +99,7 @@ private:
     ContactLaw law_;
     double margin_ = 0.0;
     std::vector<Candidate> candidates_;
+    std::vector<SideFrames> frames_;   // every block's side frames of this step
     // buffers kept between refreshes so that a steady state allocates nothing
     std::vector<Candidate> previous_;
     std::vector<Aabb> boxes_;

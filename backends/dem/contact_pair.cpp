@@ -31,7 +31,11 @@ int face_element(const Mesh& m, int f) {
 
 }  // namespace
 
-bool is_target(const std::vector<Block>& blocks, int h, int hit_side, int t, int target_side) {
+namespace {
+
+// the target rule with the two sides' outward normals at hand (only the last tie needs them)
+bool is_target_given(const std::vector<Block>& blocks, int h, int hit_side, int t, int target_side, const Vec3& nh,
+                     const Vec3& nt) {
     double ah = blocks[h].side_area[hit_side], at = blocks[t].side_area[target_side];
     double tol = 1e-9 * std::max(ah, at);
     if (at > ah + tol) return true;
@@ -42,26 +46,37 @@ bool is_target(const std::vector<Block>& blocks, int h, int hit_side, int t, int
     // equal sides of equal blocks: by geometry, never by index or name. m = n_t − n_h changes
     // sign when the two swap; its first component along z, x, y of at least half its length
     // decides (the lower block of a stack is the target; side by side, the one on the −x side)
-    const Vec3 nt = quad_normal(blocks[t].side_quad(target_side), Vec2::Zero());
-    const Vec3 nh = quad_normal(blocks[h].side_quad(hit_side), Vec2::Zero());
     const Vec3 m = nt - nh;
     for (int axis : {2, 0, 1})
         if (std::abs(m[axis]) >= 0.5 * m.norm()) return m[axis] > 0.0;
     return t < h;   // unreachable: some component of a vector is at least 1/√3 of its length
 }
 
-void PairGeometry::set(const std::vector<Block>& blocks, int h, int t) {
+}  // namespace
+
+bool is_target(const std::vector<Block>& blocks, int h, int hit_side, int t, int target_side) {
+    return is_target_given(blocks, h, hit_side, t, target_side,
+                           quad_normal(blocks[h].side_quad(hit_side), Vec2::Zero()),
+                           quad_normal(blocks[t].side_quad(target_side), Vec2::Zero()));
+}
+
+SideFrames SideFrames::of(const Block& b) {
+    SideFrames f;
+    for (int k = 0; k < 6; ++k) {
+        const Quad q = b.side_quad(k);
+        f.normal[k] = quad_normal(q, Vec2::Zero());
+        f.centre[k] = 0.25 * (q[0] + q[1] + q[2] + q[3]);
+    }
+    return f;
+}
+
+void PairGeometry::set(const std::vector<Block>& blocks, const std::vector<SideFrames>& frames, int h, int t) {
     hit = h;
     target = t;
-    const Block& hb = blocks[h];
     const Block& tb = blocks[t];
-    std::array<Vec3, 6> hn;
-    for (int k = 0; k < 6; ++k) {
-        const Quad q = tb.side_quad(k);
-        normal[k] = quad_normal(q, Vec2::Zero());
-        centre[k] = 0.25 * (q[0] + q[1] + q[2] + q[3]);
-        hn[k] = quad_normal(hb.side_quad(k), Vec2::Zero());
-    }
+    normal = frames[t].normal;
+    centre = frames[t].centre;
+    const std::array<Vec3, 6>& hn = frames[h].normal;
     for (int s = 0; s < 6; ++s) {
         double best = 0.0;
         best_side[s] = -1;
@@ -69,10 +84,11 @@ void PairGeometry::set(const std::vector<Block>& blocks, int h, int t) {
             const double d = hn[f].dot(normal[s]);
             if (d < best) best = d, best_side[s] = f;
         }
-        target_ok[s] = best_side[s] >= 0 && is_target(blocks, h, best_side[s], t, s);
+        target_ok[s] = best_side[s] >= 0 && is_target_given(blocks, h, best_side[s], t, s, hn[best_side[s]], normal[s]);
         // a side within 1e-3 rad of perpendicular casts a shadow under 1e-3 of its height: left
         // out, so that rounding never makes a side standing on the target a hitting side
-        for (int f = 0; f < 6; ++f) faces[f][s] = hn[f].dot(normal[s]) < -1e-3 && is_target(blocks, h, f, t, s);
+        for (int f = 0; f < 6; ++f)
+            faces[f][s] = hn[f].dot(normal[s]) < -1e-3 && is_target_given(blocks, h, f, t, s, hn[f], normal[s]);
     }
     // a hitting point up to 1e-4 of the edge outside a side plane still counts as over the
     // target side: flush edges (stacked blocks) stay in contact as they bulge

@@ -10,6 +10,14 @@
 
 namespace cairn::dem {
 
+/// The sides of one block for one step: outward unit normals and centres (m) of its 6 sides.
+struct SideFrames {
+    std::array<Vec3, 6> normal;
+    std::array<Vec3, 6> centre;
+    /// the frames of block b's sides at its current nodes
+    static SideFrames of(const Block& b);
+};
+
 /// The sides of a (hitting, target) block pair for one step.
 struct PairGeometry {
     std::array<Vec3, 6> normal;      ///< target sides' outward unit normals
@@ -23,13 +31,13 @@ struct PairGeometry {
     double flush_tol = 0.0;          ///< a point this far outside a side plane is still over the side, m
     double closer_tol = 0.0;         ///< another side this much closer: the point enters through it, m
     int hit = -1, target = -1;       ///< the pair it was set for (-1: none yet)
-    /// the geometry of the pair (h hits t)
-    void set(const std::vector<Block>& blocks, int h, int t);
+    /// the geometry of the pair (h hits t) from every block's side frames of this step
+    void set(const std::vector<Block>& blocks, const std::vector<SideFrames>& frames, int h, int t);
     /// set it for the pair unless already set for it (candidates of one pair come in a row);
     /// true when it changed
-    bool update(const std::vector<Block>& blocks, int h, int t) {
+    bool update(const std::vector<Block>& blocks, const std::vector<SideFrames>& frames, int h, int t) {
         if (h == hit && t == target) return false;
-        set(blocks, h, t);
+        set(blocks, frames, h, t);
         return true;
     }
     /// true when side `hit_side` of the hitting block hits some side of the target

@@ -48,7 +48,7 @@ void ContactSet::evaluate_overlap(std::vector<Block>& blocks, double dt, long be
         Block& hb = blocks[c.hit_block];
         Block& tb = blocks[c.target_block];
         for (auto& a : c.subs) a.seen = false;
-        g.update(blocks, c.hit_block, c.target_block);
+        g.update(blocks, frames_, c.hit_block, c.target_block);
         const int hit_side = hb.mesh.face_side[c.hit_face];
         if (g.faces_any(hit_side)) {
             const Quad hq = hb.face_quad(c.hit_face);
@@ -67,8 +67,9 @@ void ContactSet::evaluate_overlap(std::vector<Block>& blocks, double dt, long be
                     for (const auto& p : tq) tbox.add(p);
                     if (!tbox.overlaps(hbox)) continue;
                     // the target face made planar: its centre, normal at the centre, corners on that plane
-                    const Vec3 ct = 0.25 * (tq[0] + tq[1] + tq[2] + tq[3]);
-                    const Vec3 nt = quad_normal(tq, Vec2::Zero());
+                    const bool whole = tb.mesh.side_grid[s].size() == 1;   // the face is the side
+                    const Vec3 ct = whole ? g.centre[s] : Vec3(0.25 * (tq[0] + tq[1] + tq[2] + tq[3]));
+                    const Vec3 nt = whole ? g.normal[s] : quad_normal(tq, Vec2::Zero());
                     Quad flat;
                     for (int i = 0; i < 4; ++i) flat[i] = tq[i] - nt.dot(tq[i] - ct) * nt;
                     int nc = side_count;
