@@ -110,6 +110,13 @@ ContactTotals ContactSet::apply(std::vector<Block>& blocks, double dt) {
 }
 
 void ContactSet::evaluate(std::vector<Block>& blocks, double dt, long begin, long end, bool keep_forces) {
+    // this step's forces and totals start empty
+    for (long ci = begin; ci < end; ++ci) {
+        Candidate& c = candidates_[size_t(ci)];
+        c.forces.clear();
+        c.sub_forces.clear();
+        c.totals = ContactTotals{};
+    }
     if (law_.scheme == ContactScheme::paper) evaluate_paper(blocks, dt, begin, end, keep_forces);
     else evaluate_overlap(blocks, dt, begin, end, keep_forces);
 }

@@ -13,8 +13,6 @@ void ContactSet::evaluate_paper(std::vector<Block>& blocks, double dt, long begi
     std::array<ParallelogramFrame, 6> frames;   // rigid parallelogram target sides: closed-form projection
     for (long ci = begin; ci < end; ++ci) {
         Candidate& c = candidates_[size_t(ci)];
-        c.forces.clear();
-        c.totals = ContactTotals{};
         ContactTotals& tot = c.totals;
         Block& hb = blocks[c.hit_block];
         Block& tb = blocks[c.target_block];

@@ -42,8 +42,6 @@ void ContactSet::evaluate_overlap(std::vector<Block>& blocks, double dt, long be
     std::array<Affine, kMaxConstraints> cons;
     for (long ci = begin; ci < end; ++ci) {
         Candidate& c = candidates_[size_t(ci)];
-        c.sub_forces.clear();
-        c.totals = ContactTotals{};
         ContactTotals& tot = c.totals;
         Block& hb = blocks[c.hit_block];
         Block& tb = blocks[c.target_block];
