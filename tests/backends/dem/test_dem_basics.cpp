@@ -142,7 +142,13 @@ TEST_CASE("a meshed block in contact gives the same bits on 1 and 2 threads", "[
                                    x.energy.contact, x.energy.strain, x.energy.dissipated, double(x.contacts)};
     };
     const auto one = run(1), two = run(2);
-    omp_set_num_threads(2);
     CHECK(one == two);
+    // the overlap scheme, 8 x 8 sub-contacts per element face: past the parallel threshold too
+    s.contact.scheme = ContactScheme::overlap;
+    s.contact.subdivision = 8;
+    const auto one_o = run(1), two_o = run(2);
+    omp_set_num_threads(2);
+    CHECK(one_o[6] > 100);
+    CHECK(one_o == two_o);
 }
 #endif
