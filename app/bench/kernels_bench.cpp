@@ -103,8 +103,8 @@ void whole_step_free(benchmark::State& state) { steps(state, false); }
 
 // steps of the 300-brick running-bond wall of `cairn bench wall` (30 courses of 10 bricks of
 // 0.4 × 0.2 × 0.2 m at kn = 3e9 N/m³, each course at its static penetration, dt = 1e-4 s), with
-// the paper's grid (scheme 0, its default 0.1 m spacing) or the overlap scheme (1, 2 × 2
-// sub-contacts per face): the cost of contact at the same kn
+// the paper's grid (scheme 0, its default 0.1 m spacing) or the overlap scheme (1, its default
+// sub-division): the cost of contact at the same kn
 void wall_step(benchmark::State& state) {
     set_threads(int(state.range(1)));
     Scene s = bench::wall_scene(30, 10, bench::wall_setups()[1]);

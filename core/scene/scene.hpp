@@ -79,7 +79,7 @@ struct ContactLaw {
     double restitution = 0.0;   ///< for rigid-contact engines only: coefficient of restitution
     double grid_spacing = 0.1;  ///< paper scheme: largest spacing of hitting points on a face, m
     ContactScheme scheme = ContactScheme::paper;  ///< in-house engine: how contact is integrated
-    int subdivision = 2;        ///< overlap scheme: sub-contacts per edge of a hitting face (n×n), count
+    int subdivision = 4;        ///< overlap scheme: sub-contacts per edge of a hitting face (n×n), count
 };
 
 /// Rayleigh-type damping of the blocks' motion.
