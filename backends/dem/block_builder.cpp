@@ -192,7 +192,9 @@ Block make_block(const BlockDef& def, const Scene& scene) {
         b.side_area[s] = quad_area(q);
         for (int i = 0; i < 4; ++i) b.min_edge = std::min(b.min_edge, (q[(i + 1) % 4] - q[i]).norm());
     }
-    b.hits = hitting_points(b.mesh, scene.contact.grid_spacing);
+    // hitting points: the paper's scheme only (the overlap scheme cuts the faces as it goes)
+    if (scene.contact.scheme == ContactScheme::paper) b.hits = hitting_points(b.mesh, scene.contact.grid_spacing);
+    else b.hits.assign(b.mesh.faces.size(), {});
     const size_t nn = b.mesh.nodes.size();
     b.x.resize(nn);
     b.v.assign(nn, Vec3::Zero());

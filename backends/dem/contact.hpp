@@ -1,13 +1,17 @@
 #pragma once
-/// Node-to-face contact of the paper: candidate (hitting face, target block) pairs found from
-/// bounding boxes every n steps; each step a hitting point that lies inside the target block acts
-/// on the target side it is closest to, with a penalty normal force and an elastic-then-Coulomb
-/// shear force from a stick anchor stored in the target face's natural coordinates.
+/// Contact of the in-house engine: candidate (hitting face, target block) pairs found from
+/// bounding boxes every n steps; each step either scheme (docs/dem.md) turns them into forces:
+/// - overlap: each hitting face is cut into n×n sub-cells; a sub-cell's part behind the target
+///   face and over it carries the exact integral of kn·d (closed form) at its pressure centre,
+///   and an elastic-then-Coulomb shear spring from its own stick anchor;
+/// - paper: the paper's node-to-face rule on a grid of hitting points, each with a penalty normal
+///   force and a shear spring from a stick anchor in the target face's natural coordinates.
 
 #include <utility>
 #include <vector>
 
 #include "block.hpp"
+#include "contact_pair.hpp"
 #include "scene/scene.hpp"
 
 namespace cairn::dem {
@@ -17,6 +21,25 @@ struct Anchor {
     int side = -1;              ///< target side the point acts on; -1 = not in contact
     int face = -1;              ///< target boundary face the stick point lies on
     Vec2 xi0 = Vec2::Zero();    ///< natural coordinates of the stick point on that face
+    double energy = 0.0;        ///< shear-spring energy at the last evaluation, J (dissipated on reset)
+};
+
+/// Shear state of one sub-contact of the overlap scheme: the elastic offset of the stick spring,
+/// built up from the relative tangential motion at the sub-contact's pressure centre.
+struct SubAnchor {
+    int cell = 0;               ///< sub-cell of the hitting face, v·n + u
+    int target_face = 0;        ///< target boundary face
+    Vec3 u = Vec3::Zero();      ///< elastic shear offset, world, m
+    double energy = 0.0;        ///< shear-spring energy at the last evaluation, J (dissipated on reset)
+    double area = 0.0;          ///< contact area at the last evaluation, m²
+    bool seen = false;          ///< in contact at this evaluation
+};
+
+/// The force of one sub-contact, kept until it is spread to the nodes: both blocks take it at the
+/// same point, so the pair is collinear.
+struct SubForce {
+    NodeWeights hit, target;    ///< where it acts on each block
+    Vec3 force = Vec3::Zero();  ///< on the hitting block (the target takes −force), N
 };
 
 /// Energies and counts of one contact evaluation.
@@ -41,8 +64,10 @@ struct Candidate {
     int hit_block = 0;
     int hit_face = 0;
     int target_block = 0;
-    std::vector<Anchor> anchors;  ///< one per hitting point of the face
-    std::vector<PointForce> forces;  ///< this step's forces, spread after every candidate is done
+    std::vector<Anchor> anchors;  ///< paper scheme: one per hitting point of the face
+    std::vector<PointForce> forces;  ///< paper scheme: this step's forces, spread after every candidate
+    std::vector<SubAnchor> subs;     ///< overlap scheme: anchors of the sub-contacts in contact
+    std::vector<SubForce> sub_forces;///< overlap scheme: this step's forces, spread after every candidate
     ContactTotals totals;            ///< this step's energies and counts
 };
 
@@ -68,11 +93,16 @@ public:
 private:
     /// candidates [begin, end): forces (kept in the candidate, or spread at once), anchors, totals
     void evaluate(std::vector<Block>& blocks, double dt, long begin, long end, bool keep_forces);
+    /// the paper's node-to-face scheme on candidates [begin, end)
+    void evaluate_paper(std::vector<Block>& blocks, double dt, long begin, long end, bool keep_forces);
+    /// the overlap scheme on candidates [begin, end)
+    void evaluate_overlap(std::vector<Block>& blocks, double dt, long begin, long end, bool keep_forces);
 
     ContactLaw law_;
     double margin_ = 0.0;
     bool keep_forces_ = false;
     std::vector<Candidate> candidates_;
+    std::vector<SideFrames> frames_;   // every block's side frames of this step
     // buffers kept between refreshes so that a steady state allocates nothing
     std::vector<Candidate> previous_;
     std::vector<Aabb> boxes_;
@@ -80,9 +110,10 @@ private:
     std::vector<std::pair<int, int>> pairs_;
 };
 
-/// true when side `target_side` of block t is the target of side `hit_side` of block h by the
-/// paper's rule (the larger face is the target; equal faces: a fixed block, then the larger
-/// block, then the lower index is the target)
+/// true when side `target_side` of block t is the target of side `hit_side` of block h: the
+/// larger face is the target; equal faces: a fixed block, then the larger block, then by
+/// geometry (the lower of two stacked sides, the −x one of two side by side), never by index
+/// or name
 bool is_target(const std::vector<Block>& blocks, int h, int hit_side, int t, int target_side);
 
 }  // namespace cairn::dem

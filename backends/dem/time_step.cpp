@@ -13,7 +13,17 @@ double side_contact_omega2(const Block& b, int side, const ContactLaw& law) {
     const Vec3 n = quad_normal(q, Vec2::Zero());
     const Vec3 t1 = n.unitOrthogonal(), t2 = n.cross(t1);
     Mat6 k = Mat6::Zero();
-    for (const auto& p : hit_grid(q, law.grid_spacing)) {
+    // the springs of a whole side: the paper's hitting points, or (overlap scheme) the exact
+    // integral over the side, which 2×2 Gauss points give for the quadratic integrand
+    std::vector<HitPoint> springs;
+    if (law.scheme == ContactScheme::paper) {
+        springs = hit_grid(q, law.grid_spacing);
+    } else {
+        const double gp = 1.0 / std::sqrt(3.0), area = quad_area(q);
+        for (double u : {-gp, gp})
+            for (double v : {-gp, gp}) springs.push_back({Vec2(u, v), 0.25 * area});
+    }
+    for (const auto& p : springs) {
         Vec3 r = quad_point(q, p.xi) - b.body.x;
         auto add = [&](const Vec3& d, double stiff) {
             Vec6 g;

@@ -1,5 +1,6 @@
 #include "world.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 
@@ -87,8 +88,15 @@ void World::refresh_if_due() {
     ++steps_since_refresh_;
     bool due = steps_since_refresh_ >= scene_.run.contact_interval;
     if (!due) {
+        // the check runs before this step's move: add a bound on it (speed × dt)
+        auto speed = [](const Block& b) {
+            if (!b.deformable) return b.body.v.norm() + b.r_max * b.body.omega().norm();
+            double v = 0.0;
+            for (const auto& vn : b.v) v = std::max(v, vn.norm());
+            return v;
+        };
         for (const auto& b : blocks_)
-            if (!b.fixed && b.motion_since_refresh() > 0.5 * contacts_.margin()) {
+            if (!b.fixed && b.motion_since_refresh() + speed(b) * dt_ > 0.5 * contacts_.margin()) {
                 due = true;
                 ++early_refreshes_;
                 break;

@@ -34,6 +34,10 @@ const char* to_string(MassScheme m) {
     return "?";
 }
 
+const char* to_string(ContactScheme s) {
+    return s == ContactScheme::paper ? "paper" : "overlap";
+}
+
 const char* to_string(ContactDampingRule r) {
     switch (r) {
         case ContactDampingRule::none: return "none";

@@ -31,6 +31,12 @@ enum class ContactDampingRule {
     time,       ///< γ (s): dashpot c = γ·k for each contact spring (the paper's C = γ·Kc)
 };
 
+/// How the in-house engine finds and integrates contact (docs/dem.md).
+enum class ContactScheme {
+    overlap,    ///< the penalty integrated over the overlap of facing faces, n×n sub-contacts per face
+    paper,      ///< the paper's node-to-face rule on a grid of virtual hitting points (grid_spacing)
+};
+
 /// An elastic isotropic material.
 struct Material {
     std::string name;
@@ -71,7 +77,9 @@ struct ContactLaw {
     ContactDampingRule damping_rule = ContactDampingRule::none;
     double damping = 0.0;       ///< ζ (dimensionless) or γ (s), per damping_rule
     double restitution = 0.0;   ///< for rigid-contact engines only: coefficient of restitution
-    double grid_spacing = 0.1;  ///< largest spacing of hitting points on a face, m (virtual node grid)
+    double grid_spacing = 0.1;  ///< paper scheme: largest spacing of hitting points on a face, m
+    ContactScheme scheme = ContactScheme::paper;  ///< in-house engine: how contact is integrated
+    int subdivision = 4;        ///< overlap scheme: sub-contacts per edge of a hitting face (n×n), count
 };
 
 /// Rayleigh-type damping of the blocks' motion.
@@ -174,5 +182,6 @@ const char* to_string(Shape s);
 const char* to_string(BlockModel m);
 const char* to_string(MassScheme m);
 const char* to_string(ContactDampingRule r);
+const char* to_string(ContactScheme s);
 
 }  // namespace cairn

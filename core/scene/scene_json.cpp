@@ -47,7 +47,9 @@ nlohmann::json scene_to_json(const Scene& scene) {
     const auto& c = scene.contact;
     json contact = {{"kn", c.kn}, {"ks", c.ks}, {"friction", c.friction},
                     {"damping_rule", to_string(c.damping_rule)}, {"damping", c.damping},
-                    {"restitution", c.restitution}, {"grid_spacing", c.grid_spacing}};
+                    {"restitution", c.restitution}, {"scheme", to_string(c.scheme)}};
+    if (c.scheme == ContactScheme::paper) contact["grid_spacing"] = c.grid_spacing;
+    else contact["subdivision"] = c.subdivision;
     json blocks = json::array();
     for (const auto& b : scene.blocks) blocks.push_back(block_json(b, scene));
     json loads = json::array();

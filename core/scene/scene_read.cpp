@@ -89,7 +89,8 @@ void read_materials(const TableReader& root, Scene& scene) {
 
 ContactLaw read_contact(const TableReader& root) {
     TableReader c = sub_table(root, "contact", {"kn", "ks", "friction", "damping_ratio",
-                                                "damping_time", "restitution", "grid_spacing"});
+                                                "damping_time", "restitution", "grid_spacing",
+                                                "scheme", "subdivision"});
     ContactLaw law;
     law.kn = positive(c.require("kn"));
     law.ks = law.kn;
@@ -110,7 +111,22 @@ ContactLaw read_contact(const TableReader& root) {
         law.restitution = it.number();
         it.check(law.restitution >= 0.0 && law.restitution <= 1.0, "must be in [0, 1]");
     }
-    if (Item it = c.get("grid_spacing")) law.grid_spacing = positive(it);
+    if (Item it = c.get("scheme")) {
+        const std::string s = it.string();
+        if (s == "overlap") law.scheme = ContactScheme::overlap;
+        else if (s == "paper") law.scheme = ContactScheme::paper;
+        else it.fail("expected \"overlap\" or \"paper\"");
+    }
+    if (Item it = c.get("grid_spacing")) {
+        law.grid_spacing = positive(it);
+        it.check(law.scheme == ContactScheme::paper, "applies to contact.scheme = \"paper\" only");
+    }
+    if (Item it = c.get("subdivision")) {
+        law.subdivision = it.small_integer();
+        // n² sub-contacts per hitting face: bounded so that no scene can allocate without bound
+        it.check(law.subdivision >= 1 && law.subdivision <= 16, "must be an integer in [1, 16]");
+        it.check(law.scheme == ContactScheme::overlap, "applies to contact.scheme = \"overlap\" only");
+    }
     return law;
 }
 

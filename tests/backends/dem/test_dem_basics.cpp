@@ -80,7 +80,9 @@ TEST_CASE("energy balance closes for an undamped oscillation and a damped one", 
         const double scale = 2600 * 9.81 * 0.0127;
         CHECK(worst < (rule == ContactDampingRule::none ? 0.005 : 0.02) * scale);
         if (rule == ContactDampingRule::ratio) CHECK(diss > 0.5 * scale);
-        else CHECK(diss == 0.0);
+        // undamped: nothing dissipates but the shear springs given up when the block leaves the
+        // contact (booked as dissipated): their offsets are rounding, 1e-12 of the scale at most
+        else { INFO("dissipated " << diss << " J"); CHECK(std::abs(diss) < 1e-12 * scale); }
     }
 }
 
@@ -140,7 +142,13 @@ TEST_CASE("a meshed block in contact gives the same bits on 1 and 2 threads", "[
                                    x.energy.contact, x.energy.strain, x.energy.dissipated, double(x.contacts)};
     };
     const auto one = run(1), two = run(2);
-    omp_set_num_threads(2);
     CHECK(one == two);
+    // the overlap scheme, 8 x 8 sub-contacts per element face: past the parallel threshold too
+    s.contact.scheme = ContactScheme::overlap;
+    s.contact.subdivision = 8;
+    const auto one_o = run(1), two_o = run(2);
+    omp_set_num_threads(2);
+    CHECK(one_o[6] > 100);
+    CHECK(one_o == two_o);
 }
 #endif

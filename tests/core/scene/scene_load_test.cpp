@@ -72,6 +72,7 @@ ks = 1e7
 friction = 0.4
 damping_time = 0.002
 restitution = 0.5
+scheme = "paper"
 grid_spacing = 0.05
 [damping]
 alpha = 1.5
@@ -137,6 +138,7 @@ solver = "pgs"
     CHECK(s.contact.damping == 0.002);
     CHECK(s.contact.restitution == 0.5);
     CHECK(s.contact.grid_spacing == 0.05);
+    CHECK(s.contact.scheme == ContactScheme::paper);
     CHECK(s.damping.alpha == 1.5);
     CHECK(s.damping.beta == 1e-4);
     REQUIRE(s.blocks.size() == 2);

@@ -79,6 +79,18 @@ TEST_CASE("both contact damping keys are rejected", "[scene][reject]") {
     CHECK_THAT(msg, Contains("bad.toml:12: contact.damping_time = 0.01: give damping_ratio or damping_time, not both"));
 }
 
+TEST_CASE("contact scheme keys are checked against the scheme they belong to", "[scene][reject]") {
+    CHECK_THAT(error_of(with_line(10, "friction = 0.6\nscheme = \"grid\"")),
+               Contains("bad.toml:11: contact.scheme = \"grid\": expected \"overlap\" or \"paper\""));
+    CHECK_THAT(error_of(with_line(10, "friction = 0.6\nscheme = \"overlap\"\ngrid_spacing = 0.05")),
+               Contains("bad.toml:12: contact.grid_spacing = 0.05: applies to contact.scheme = \"paper\" only"));
+    CHECK_THAT(error_of(with_line(10, "friction = 0.6\nscheme = \"overlap\"\nsubdivision = 17")),
+               Contains("bad.toml:12: contact.subdivision = 17: must be an integer in [1, 16]"));
+    CHECK_THAT(error_of(with_line(10, "friction = 0.6\nsubdivision = 4")),
+               Contains("bad.toml:11: contact.subdivision = 4: applies to contact.scheme = \"overlap\" only"));
+    CHECK(error_of(with_line(10, "friction = 0.6\nscheme = \"overlap\"\nsubdivision = 4")).empty());
+}
+
 TEST_CASE("a missing required key names the table's line", "[scene][reject]") {
     CHECK_THAT(error_of(with_line(3, "")),
                Contains("bad.toml:2: run.duration: missing required key"));

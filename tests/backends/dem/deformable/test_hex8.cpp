@@ -109,6 +109,7 @@ TEST_CASE("critical step of a lumped hex8 cube is sqrt(2/3)·L/c_d", "[dem][hex8
 TEST_CASE("a meshed side carries one regular grid of hitting points whose areas sum to the side's", "[dem][contact]") {
     Scene s;
     s.materials.push_back({"stone", 2600, 30e9, 0.2});
+    s.contact.scheme = ContactScheme::paper;
     s.contact.grid_spacing = 0.1;
     BlockDef d;
     d.name = "A";

@@ -1,0 +1,67 @@
+#include "contact_overlap.hpp"
+
+#include <cmath>
+
+namespace cairn::dem {
+
+void clip(ClipPolygon& poly, const Affine& g) {
+    if (poly.n == 0) return;
+    std::array<double, ClipPolygon::kMaxVertices> val;
+    bool all_in = true, all_out = true;
+    for (int i = 0; i < poly.n; ++i) {
+        val[i] = g(poly.p[i]);
+        all_in = all_in && val[i] >= 0.0;
+        all_out = all_out && val[i] < 0.0;
+    }
+    if (all_in) return;
+    if (all_out) {
+        poly.n = 0;
+        return;
+    }
+    ClipPolygon out;
+    for (int i = 0; i < poly.n; ++i) {
+        const int j = (i + 1) % poly.n;
+        const bool in_i = val[i] >= 0.0, in_j = val[j] >= 0.0;
+        if (in_i && out.n < ClipPolygon::kMaxVertices) out.p[out.n++] = poly.p[i];
+        if (in_i != in_j && out.n < ClipPolygon::kMaxVertices) {
+            // the edge crosses g = 0: one cut point, linear along the edge
+            const double s = val[i] / (val[i] - val[j]);
+            out.p[out.n++] = poly.p[i] + s * (poly.p[j] - poly.p[i]);
+        }
+    }
+    poly = out;
+}
+
+OverlapIntegrals integrate_depth(const ClipPolygon& poly, const Vec3& c, const Vec3& n) {
+    OverlapIntegrals r;
+    if (poly.n < 3) return r;
+    // projected vertices and their depths
+    std::array<Vec3, ClipPolygon::kMaxVertices> x;
+    std::array<double, ClipPolygon::kMaxVertices> d;
+    for (int i = 0; i < poly.n; ++i) {
+        d[i] = n.dot(c - poly.p[i]);
+        x[i] = poly.p[i] + d[i] * n;
+    }
+    // fan from vertex 0; over a triangle with barycentric λ, ∫λiλj dA = A(1 + δij)/12
+    for (int i = 1; i + 1 < poly.n; ++i) {
+        const double a = 0.5 * (x[i] - x[0]).cross(x[i + 1] - x[0]).dot(n);
+        const double s = d[0] + d[i] + d[i + 1];
+        const double q = d[0] * d[0] + d[i] * d[i] + d[i + 1] * d[i + 1];
+        const Vec3 sx = x[0] + x[i] + x[i + 1];
+        const Vec3 xd = d[0] * x[0] + d[i] * x[i] + d[i + 1] * x[i + 1];
+        r.area += a;
+        r.d1 += a * s / 3.0;
+        r.d2 += a * (s * s + q) / 12.0;
+        r.moment += a * (xd + sx * s) / 12.0;
+    }
+    // a hitting cell seen from the target runs clockwise: the signs of the fan follow its turn
+    if (r.area < 0.0) {
+        r.area = -r.area;
+        r.d1 = -r.d1;
+        r.d2 = -r.d2;
+        r.moment = -r.moment;
+    }
+    return r;
+}
+
+}  // namespace cairn::dem

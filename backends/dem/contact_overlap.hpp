@@ -1,0 +1,43 @@
+#pragma once
+/// Geometry of the overlap scheme: a hitting sub-cell (a polygon on the hitting face) clipped by
+/// affine constraints g(p) = a·p + b ≥ 0 (behind the target plane, over the target face, not
+/// entering through another side), and the closed-form integrals of the penetration d over the
+/// clipped polygon projected on the target plane (d is affine over a planar cell, so area × d at
+/// the centroid and the first moment are exact).
+
+#include <array>
+
+#include "geometry/types.hpp"
+
+namespace cairn::dem {
+
+/// an affine function of a point, g(p) = a·p + b (units of a length)
+struct Affine {
+    Vec3 a = Vec3::Zero();   ///< gradient, dimensionless
+    double b = 0.0;          ///< value at the origin, m
+    double operator()(const Vec3& p) const { return a.dot(p) + b; }
+};
+
+/// a convex polygon of at most kMaxVertices vertices (a quadrilateral clipped by up to 16 planes)
+struct ClipPolygon {
+    static constexpr int kMaxVertices = 24;
+    int n = 0;                                  ///< vertex count
+    std::array<Vec3, kMaxVertices> p;           ///< vertices, m
+};
+
+/// keep the part of `poly` where g ≥ 0 (Sutherland–Hodgman; g is affine, so cut points are exact)
+void clip(ClipPolygon& poly, const Affine& g);
+
+/// the integrals of the penetration over a polygon projected on a target plane
+struct OverlapIntegrals {
+    double area = 0.0;             ///< projected area, m²
+    double d1 = 0.0;               ///< ∫ d dA, m³
+    double d2 = 0.0;               ///< ∫ d² dA, m⁴
+    Vec3 moment = Vec3::Zero();    ///< ∫ x d dA over the projected points x, m⁴
+};
+
+/// integrals of d = n·(c − p) over the projection of `poly` on the plane through c with unit
+/// normal n (triangle fan; exact for a planar polygon, since d is affine)
+OverlapIntegrals integrate_depth(const ClipPolygon& poly, const Vec3& c, const Vec3& n);
+
+}  // namespace cairn::dem

@@ -1,0 +1,152 @@
+#include "contact_pair.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "contact.hpp"
+#include "dem/deformable/hex8.hpp"
+
+namespace cairn::dem {
+
+namespace {
+
+double reduced_mass(const Block& a, const Block& b) {
+    if (a.fixed) return b.body.mass;
+    if (b.fixed) return a.body.mass;
+    return a.body.mass * b.body.mass / (a.body.mass + b.body.mass);
+}
+
+// the element under boundary face f: the face's nodes' lowest grid index on each axis, held
+// inside the mesh (a face on a high side belongs to the last element along that axis)
+int face_element(const Mesh& m, int f) {
+    const int nx = m.divisions[0], ny = m.divisions[1];
+    std::array<int, 3> lo{1 << 30, 1 << 30, 1 << 30};
+    for (int n : m.faces[f]) {
+        const int i = n % (nx + 1), j = (n / (nx + 1)) % (ny + 1), k = n / ((nx + 1) * (ny + 1));
+        lo = {std::min(lo[0], i), std::min(lo[1], j), std::min(lo[2], k)};
+    }
+    for (int a = 0; a < 3; ++a) lo[a] = std::min(lo[a], m.divisions[a] - 1);
+    return lo[0] + nx * (lo[1] + ny * lo[2]);
+}
+
+}  // namespace
+
+namespace {
+
+// the target rule with the two sides' outward normals at hand (only the last tie needs them)
+bool is_target_given(const std::vector<Block>& blocks, int h, int hit_side, int t, int target_side, const Vec3& nh,
+                     const Vec3& nt) {
+    double ah = blocks[h].side_area[hit_side], at = blocks[t].side_area[target_side];
+    double tol = 1e-9 * std::max(ah, at);
+    if (at > ah + tol) return true;
+    if (ah > at + tol) return false;
+    if (blocks[t].fixed != blocks[h].fixed) return blocks[t].fixed;
+    double vt = blocks[t].volume, vh = blocks[h].volume;
+    if (std::abs(vt - vh) > 1e-9 * std::max(vt, vh)) return vt > vh;
+    // equal sides of equal blocks: by geometry, never by index or name. m = n_t − n_h changes
+    // sign when the two swap; its first component along z, x, y of at least half its length
+    // decides (the lower block of a stack is the target; side by side, the one on the −x side)
+    const Vec3 m = nt - nh;
+    for (int axis : {2, 0, 1})
+        if (std::abs(m[axis]) >= 0.5 * m.norm()) return m[axis] > 0.0;
+    return t < h;   // unreachable: some component of a vector is at least 1/√3 of its length
+}
+
+}  // namespace
+
+bool is_target(const std::vector<Block>& blocks, int h, int hit_side, int t, int target_side) {
+    return is_target_given(blocks, h, hit_side, t, target_side,
+                           quad_normal(blocks[h].side_quad(hit_side), Vec2::Zero()),
+                           quad_normal(blocks[t].side_quad(target_side), Vec2::Zero()));
+}
+
+SideFrames SideFrames::of(const Block& b) {
+    SideFrames f;
+    for (int k = 0; k < 6; ++k) {
+        const Quad q = b.side_quad(k);
+        f.normal[k] = quad_normal(q, Vec2::Zero());
+        f.centre[k] = 0.25 * (q[0] + q[1] + q[2] + q[3]);
+    }
+    return f;
+}
+
+void PairGeometry::set(const std::vector<Block>& blocks, const std::vector<SideFrames>& frames, int h, int t) {
+    hit = h;
+    target = t;
+    const Block& tb = blocks[t];
+    normal = frames[t].normal;
+    centre = frames[t].centre;
+    const std::array<Vec3, 6>& hn = frames[h].normal;
+    for (int s = 0; s < 6; ++s) {
+        double best = 0.0;
+        best_side[s] = -1;
+        for (int f = 0; f < 6; ++f) {
+            const double d = hn[f].dot(normal[s]);
+            if (d < best) best = d, best_side[s] = f;
+        }
+        target_ok[s] = best_side[s] >= 0 && is_target_given(blocks, h, best_side[s], t, s, hn[best_side[s]], normal[s]);
+        // a side within 1e-3 rad of perpendicular casts a shadow under 1e-3 of its height: left
+        // out, so that rounding never makes a side standing on the target a hitting side
+        for (int f = 0; f < 6; ++f)
+            faces[f][s] = hn[f].dot(normal[s]) < -1e-3 && is_target_given(blocks, h, f, t, s, hn[f], normal[s]);
+    }
+    // a hitting point up to 1e-4 of the edge outside a side plane still counts as over the
+    // target side: flush edges (stacked blocks) stay in contact as they bulge
+    flush_tol = 1e-4 * tb.min_edge;
+    closer_tol = 0.25 * tb.min_edge;
+}
+
+std::array<double, 2> dashpot_per_area(const ContactLaw& law, const Block& hb, const Block& tb, int hit_side) {
+    if (law.damping_rule == ContactDampingRule::time) return {law.damping * law.kn, law.damping * law.ks};
+    if (law.damping_rule == ContactDampingRule::ratio) {
+        const double m = reduced_mass(hb, tb), area = hb.side_area[hit_side];
+        return {2.0 * law.damping * std::sqrt(law.kn * m / area), 2.0 * law.damping * std::sqrt(law.ks * m / area)};
+    }
+    return {0.0, 0.0};
+}
+
+void spread(Block& b, int k, const Vec2& xi, const Vec3& force) {
+    auto w = quad_weights(xi);
+    for (int i = 0; i < 4; ++i) b.f[b.mesh.faces[k][i]] += w[i] * force;
+}
+
+NodeWeights node_weights(const Block& b, int face, const Vec3& x) {
+    NodeWeights nw;
+    if (!b.deformable) {
+        // rigid: any affine weights reproduce the force and its moment; 4 corners of the block
+        const Mesh& m = b.mesh;
+        const int n0 = m.node(0, 0, 0), n1 = m.node(1, 0, 0), n2 = m.node(0, 1, 0), n3 = m.node(0, 0, 1);
+        Mat3 e;
+        e.col(0) = b.x[n1] - b.x[n0];
+        e.col(1) = b.x[n2] - b.x[n0];
+        e.col(2) = b.x[n3] - b.x[n0];
+        const Vec3 l = e.inverse() * (x - b.x[n0]);
+        nw.count = 4;
+        nw.node = {n0, n1, n2, n3};
+        nw.w = {1.0 - l.sum(), l[0], l[1], l[2]};
+        return nw;
+    }
+    // deformable: Newton inversion of the trilinear map of the element under the face
+    const int e = face_element(b.mesh, face);
+    const auto& en = b.mesh.elements[e];
+    Vec3 xi = Vec3::Zero();
+    for (int it = 0; it < 10; ++it) {
+        const auto n = hex8_shape(xi);
+        const Mat83 dn = hex8_dshape(xi);
+        Vec3 r = -x;
+        Mat3 j = Mat3::Zero();
+        for (int a = 0; a < 8; ++a) {
+            r += n[a] * b.x[en[a]];
+            j += b.x[en[a]] * dn.row(a);
+        }
+        const Vec3 step = j.lu().solve(r);
+        xi -= step;
+        if (step.squaredNorm() < 1e-26) break;
+    }
+    const auto n = hex8_shape(xi);
+    nw.count = 8;
+    for (int a = 0; a < 8; ++a) nw.node[a] = en[a], nw.w[a] = n[a];
+    return nw;
+}
+
+}  // namespace cairn::dem

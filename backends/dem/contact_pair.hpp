@@ -1,0 +1,86 @@
+#pragma once
+/// Helpers shared by the two contact schemes: which side of a pair hits which, where a force is
+/// applied on a block (weights of its nodes), and the dashpot coefficients.
+
+#include <array>
+#include <vector>
+
+#include "block.hpp"
+#include "scene/scene.hpp"
+
+namespace cairn::dem {
+
+/// The sides of one block for one step: outward unit normals and centres (m) of its 6 sides.
+struct SideFrames {
+    std::array<Vec3, 6> normal;
+    std::array<Vec3, 6> centre;
+    /// the frames of block b's sides at its current nodes
+    static SideFrames of(const Block& b);
+};
+
+/// The sides of a (hitting, target) block pair for one step.
+struct PairGeometry {
+    std::array<Vec3, 6> normal;      ///< target sides' outward unit normals
+    std::array<Vec3, 6> centre;      ///< target sides' centres, m
+    std::array<int, 6> best_side{};  ///< per target side: the hitting block's side most opposed to it (-1: none)
+    std::array<char, 6> target_ok{}; ///< per target side: it is the target of that hitting side
+    /// overlap scheme, [hitting side][target side]: the sides face each other (normals opposed)
+    /// and the target side is the target; every side of the hitting block's lower surface seen
+    /// from a target side hits it, so their shadows tile the overlap without gap or double count
+    std::array<std::array<char, 6>, 6> faces{};
+    double flush_tol = 0.0;          ///< a point this far outside a side plane is still over the side, m
+    double closer_tol = 0.0;         ///< another side this much closer: the point enters through it, m
+    int hit = -1, target = -1;       ///< the pair it was set for (-1: none yet)
+    /// the geometry of the pair (h hits t) from every block's side frames of this step
+    void set(const std::vector<Block>& blocks, const std::vector<SideFrames>& frames, int h, int t);
+    /// set it for the pair unless already set for it (candidates of one pair come in a row);
+    /// true when it changed
+    bool update(const std::vector<Block>& blocks, const std::vector<SideFrames>& frames, int h, int t) {
+        if (h == hit && t == target) return false;
+        set(blocks, frames, h, t);
+        return true;
+    }
+    /// true when side `hit_side` of the hitting block hits some side of the target
+    bool acts(int hit_side) const {
+        for (int s = 0; s < 6; ++s)
+            if (best_side[s] == hit_side && target_ok[s]) return true;
+        return false;
+    }
+    /// overlap scheme: true when side `hit_side` of the hitting block faces some target side
+    bool faces_any(int hit_side) const {
+        for (int s = 0; s < 6; ++s)
+            if (faces[hit_side][s]) return true;
+        return false;
+    }
+};
+
+/// damping coefficients per unit contact area (N·s/m³) of the normal and the shear dashpots
+std::array<double, 2> dashpot_per_area(const ContactLaw& law, const Block& hb, const Block& tb, int hit_side);
+
+/// spread a force (N) at natural coordinates xi of boundary face k of block b to the face nodes
+void spread(Block& b, int k, const Vec2& xi, const Vec3& force);
+
+/// Weights of the nodes of a block that apply a force at one world point: Σw = 1 and
+/// Σ w·x_node = the point, so the force and its moment about any point are exact. Rigid blocks:
+/// barycentric weights of 4 corners; deformable: the hex8 shape functions of the element under
+/// the face, at the point's natural coordinates there.
+struct NodeWeights {
+    int count = 0;               ///< nodes used (4 or 8)
+    std::array<int, 8> node{};   ///< node indices
+    std::array<double, 8> w{};   ///< weights, dimensionless
+    /// the velocity of the block's material at the point, m/s
+    Vec3 velocity(const Block& b) const {
+        Vec3 v = Vec3::Zero();
+        for (int i = 0; i < count; ++i) v += w[i] * b.v[node[i]];
+        return v;
+    }
+    /// add `force` (N) at the point to the block's node forces
+    void add(Block& b, const Vec3& force) const {
+        for (int i = 0; i < count; ++i) b.f[node[i]] += w[i] * force;
+    }
+};
+
+/// the weights that put a force at world point x on block b (face: the boundary face nearest x)
+NodeWeights node_weights(const Block& b, int face, const Vec3& x);
+
+}  // namespace cairn::dem

@@ -1,0 +1,131 @@
+// The paper's node-to-face scheme (contact.scheme = "paper"): hitting points of a virtual grid.
+#include <algorithm>
+#include <array>
+#include <cmath>
+
+#include "contact.hpp"
+
+namespace cairn::dem {
+
+void ContactSet::evaluate_paper(std::vector<Block>& blocks, double dt, long begin, long end, bool keep_forces) {
+    // the geometry of the (hitting, target) pair of the candidates at hand
+    PairGeometry g;
+    std::array<ParallelogramFrame, 6> frames;   // rigid parallelogram target sides: closed-form projection
+    for (long ci = begin; ci < end; ++ci) {
+        Candidate& c = candidates_[size_t(ci)];
+        ContactTotals& tot = c.totals;
+        Block& hb = blocks[c.hit_block];
+        Block& tb = blocks[c.target_block];
+        // an anchor given up releases its shear spring: that energy is dissipated
+        auto reset = [&](Anchor& a) {
+            tot.dissipated += a.energy;
+            a = Anchor{};
+        };
+        if (g.update(blocks, frames_, c.hit_block, c.target_block)) {
+            for (int s = 0; s < 6; ++s)
+                frames[s] = tb.mesh.side_grid[s].size() == 1 ? ParallelogramFrame::of(tb.side_quad(s)) : ParallelogramFrame{};
+        }
+        const int hit_side = hb.mesh.face_side[c.hit_face];
+        // a face whose side is the hitting side of no target side cannot act: clear its anchors
+        if (!g.acts(hit_side)) {
+            for (auto& a : c.anchors) reset(a);
+            continue;
+        }
+        const Quad hq = hb.face_quad(c.hit_face);
+        const auto& pts = hb.hits[c.hit_face];
+        // damping coefficients per unit tributary area, N·s/m³
+        const auto [cn_area, ct_area] = dashpot_per_area(law_, hb, tb, hit_side);
+        for (size_t k = 0; k < pts.size(); ++k) {
+            Anchor& anchor = c.anchors[k];
+            const Vec3 xp = quad_point(hq, pts[k].xi);
+            // the point acts on the allowed target side it lies deepest behind, if it is inside
+            // the target block (behind every side plane, flush within rounding) and no other
+            // side is clearly closer (it would be entering through that side instead)
+            double dist[6];
+            int side = -1;
+            for (int s = 0; s < 6; ++s) {
+                dist[s] = g.normal[s].dot(xp - g.centre[s]);
+                if (g.best_side[s] == hit_side && g.target_ok[s] && (side < 0 || dist[s] > dist[side])) side = s;
+            }
+            bool inside = side >= 0 && dist[side] < 0.0;
+            for (int s = 0; inside && s < 6; ++s)
+                if (s != side && (dist[s] > g.flush_tol || dist[s] > dist[side] + g.closer_tol)) inside = false;
+            if (!inside) {
+                reset(anchor);
+                continue;
+            }
+            // the target face: the side's boundary face under the point (rigid: the side itself)
+            const ParallelogramFrame& frame = frames[side];
+            int face = tb.mesh.side_grid[side][0];
+            if (tb.mesh.side_grid[side].size() > 1) face = tb.face_at(side, project(tb.side_quad(side), xp).xi);
+            const Quad tq = tb.face_quad(face);
+            Projection pr = frame.valid ? frame.project(xp) : project(tq, xp);
+            const Vec3& n = pr.normal;
+            const double depth = n.dot(pr.point - xp);
+            if (!(depth > 0.0)) {
+                reset(anchor);
+                continue;
+            }
+            const double depth_ratio = depth / std::min(hb.min_edge, tb.min_edge);
+            if (depth_ratio > tot.worst_depth) tot.worst_depth = depth_ratio, tot.worst_hit = c.hit_block, tot.worst_target = c.target_block;
+            const double a = pts[k].area;
+            // relative velocity of the hitting point against the target material point
+            Vec3 vh = Vec3::Zero(), vt = Vec3::Zero();
+            auto wh = quad_weights(pts[k].xi), wt = quad_weights(pr.xi);
+            for (int i = 0; i < 4; ++i) {
+                vh += wh[i] * hb.v[hb.mesh.faces[c.hit_face][i]];
+                vt += wt[i] * tb.v[tb.mesh.faces[face][i]];
+            }
+            const Vec3 vrel = vh - vt;
+            const double closing = -vrel.dot(n);
+            // normal: penalty spring plus dashpot, never pulling
+            const double fn_el = law_.kn * a * depth;
+            double fn = std::max(0.0, fn_el + cn_area * a * closing);
+            tot.dissipated += (fn - fn_el) * closing * dt;
+            tot.stored += 0.5 * fn_el * depth;
+            // shear: elastic from the stick anchor, capped at μ·Fn
+            Vec3 fs = Vec3::Zero();
+            if (law_.ks > 0.0 && fn > 0.0) {
+                if (anchor.side != side) {
+                    reset(anchor);
+                    anchor = Anchor{side, face, pr.xi};
+                }
+                const Vec3 x0_old = frame.valid ? frame.point(anchor.xi0) : quad_point(tb.face_quad(anchor.face), anchor.xi0);
+                Vec3 u = pr.point - x0_old;
+                u -= u.dot(n) * n;
+                Vec3 vt_rel = vrel - vrel.dot(n) * n;
+                const double ks_a = law_.ks * a;
+                Vec3 f_el = -ks_a * u;
+                const double cap = law_.friction * fn;
+                if (f_el.norm() > cap) {
+                    // slip: the spring is capped at μ·Fn and its anchor follows; no shear dashpot
+                    fs = cap * f_el / f_el.norm();
+                    Projection moved = frame.valid ? frame.project(pr.point + fs / ks_a) : project(tq, pr.point + fs / ks_a, pr.xi);
+                    anchor.face = face;
+                    anchor.xi0 = moved.xi;
+                    // friction work: the force at the cap times the distance the anchor slipped
+                    tot.dissipated += fs.norm() * (moved.point - x0_old).norm();
+                    anchor.energy = 0.5 * fs.squaredNorm() / ks_a;
+                } else {
+                    // stick: spring plus shear dashpot, the dashpot trimmed so the sum stays ≤ μ·Fn
+                    fs = f_el - ct_area * a * vt_rel;
+                    if (fs.norm() > cap) fs *= cap / fs.norm();
+                    anchor.energy = 0.5 * u.squaredNorm() * ks_a;
+                    tot.dissipated -= (fs - f_el).dot(vt_rel) * dt;
+                }
+                tot.stored += anchor.energy;
+            } else {
+                reset(anchor);
+            }
+            if (keep_forces) {
+                c.forces.push_back({int(k), face, pr.xi, fn * n + fs});
+            } else {
+                spread(hb, c.hit_face, pts[k].xi, fn * n + fs);
+                spread(tb, face, pr.xi, -(fn * n + fs));
+            }
+            ++tot.active;
+        }
+    }
+}
+
+}  // namespace cairn::dem

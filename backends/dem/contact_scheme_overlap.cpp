@@ -1,0 +1,188 @@
+// The overlap scheme (contact.scheme = "overlap"): the penalty integrated over the overlap of a
+// hitting face with the target faces, on n×n sub-contacts per hitting face.
+#include <algorithm>
+#include <array>
+#include <cmath>
+
+#include "contact.hpp"
+#include "contact_overlap.hpp"
+
+namespace cairn::dem {
+
+namespace {
+
+constexpr int kMaxSubdivision = 16;   // the scene reader's bound on contact.subdivision
+constexpr int kMaxConstraints = 16;   // depth, 4 face edges, and per other side: flush and entering
+
+// the affine constraints of a target side s that do not depend on the target face: the point is
+// behind every other side plane (flush within flush_tol), is not entering through another side
+// (no other side closer by closer_tol) and is nearer to s than to any other side that the same
+// hitting side may hit (the region is shared between them without overlap)
+int side_constraints(const PairGeometry& g, int s, int hit_side, std::array<Affine, kMaxConstraints>& out) {
+    int k = 0;
+    const Vec3& ns = g.normal[s];
+    const double cs = ns.dot(g.centre[s]);
+    for (int o = 0; o < 6; ++o) {
+        if (o == s) continue;
+        const Vec3& no = g.normal[o];
+        const double co = no.dot(g.centre[o]);
+        out[k++] = Affine{-no, co + g.flush_tol};
+        const bool shared = g.faces[hit_side][o];
+        out[k++] = Affine{ns - no, co - cs + (shared ? 0.0 : g.closer_tol)};
+    }
+    return k;
+}
+
+}  // namespace
+
+void ContactSet::evaluate_overlap(std::vector<Block>& blocks, double dt, long begin, long end, bool keep_forces) {
+    PairGeometry g;
+    const int n = std::clamp(law_.subdivision, 1, kMaxSubdivision);
+    std::array<Vec3, (kMaxSubdivision + 1) * (kMaxSubdivision + 1)> grid;   // sub-cell corners
+    std::array<Affine, kMaxConstraints> cons;
+    for (long ci = begin; ci < end; ++ci) {
+        Candidate& c = candidates_[size_t(ci)];
+        ContactTotals& tot = c.totals;
+        Block& hb = blocks[c.hit_block];
+        Block& tb = blocks[c.target_block];
+        for (auto& a : c.subs) a.seen = false;
+        g.update(blocks, frames_, c.hit_block, c.target_block);
+        const int hit_side = hb.mesh.face_side[c.hit_face];
+        if (g.faces_any(hit_side)) {
+            const Quad hq = hb.face_quad(c.hit_face);
+            Aabb hbox;
+            for (const auto& p : hq) hbox.add(p);
+            hbox.inflate(tb.min_edge);   // a face may lie deep behind the target side
+            for (int j = 0; j <= n; ++j)
+                for (int i = 0; i <= n; ++i) grid[j * (n + 1) + i] = quad_point(hq, Vec2(-1.0 + 2.0 * i / n, -1.0 + 2.0 * j / n));
+            const auto [cn_area, ct_area] = dashpot_per_area(law_, hb, tb, hit_side);
+            for (int s = 0; s < 6; ++s) {
+                if (!g.faces[hit_side][s]) continue;
+                const int side_count = side_constraints(g, s, hit_side, cons);
+                for (int tf : tb.mesh.side_grid[s]) {
+                    const Quad tq = tb.face_quad(tf);
+                    Aabb tbox;
+                    for (const auto& p : tq) tbox.add(p);
+                    if (!tbox.overlaps(hbox)) continue;
+                    // the target face made planar: its centre, normal at the centre, corners on that plane
+                    const bool whole = tb.mesh.side_grid[s].size() == 1;   // the face is the side
+                    const Vec3 ct = whole ? g.centre[s] : Vec3(0.25 * (tq[0] + tq[1] + tq[2] + tq[3]));
+                    const Vec3 nt = whole ? g.normal[s] : quad_normal(tq, Vec2::Zero());
+                    Quad flat;
+                    for (int i = 0; i < 4; ++i) flat[i] = tq[i] - nt.dot(tq[i] - ct) * nt;
+                    int nc = side_count;
+                    cons[nc++] = Affine{-nt, nt.dot(ct)};   // behind the face: d ≥ 0
+                    for (int i = 0; i < 4; ++i) {           // over the face: inside each edge
+                        const Vec3 a = nt.cross(flat[(i + 1) % 4] - flat[i]).normalized();
+                        cons[nc++] = Affine{a, -a.dot(flat[i])};
+                    }
+                    // the face lies in the hull of its corners: a constraint none of them meets
+                    // rules out every sub-cell at once (most candidate faces stop here)
+                    bool missed = false;
+                    for (int k = 0; k < nc && !missed; ++k) {
+                        bool none = true;
+                        for (const auto& p : hq) none = none && cons[k](p) < 0.0;
+                        missed = none;
+                    }
+                    if (missed) continue;
+                    for (int v = 0; v < n; ++v)
+                        for (int u = 0; u < n; ++u) {
+                            ClipPolygon poly;
+                            poly.n = 4;
+                            poly.p = {grid[v * (n + 1) + u], grid[v * (n + 1) + u + 1], grid[(v + 1) * (n + 1) + u + 1],
+                                      grid[(v + 1) * (n + 1) + u]};
+                            bool empty = false;
+                            for (int k = 0; k < nc && !empty; ++k) {
+                                clip(poly, cons[k]);
+                                empty = poly.n < 3;
+                            }
+                            if (empty) continue;
+                            const OverlapIntegrals in = integrate_depth(poly, ct, nt);
+                            if (!(in.d1 > 0.0) || !(in.area > 0.0)) continue;
+                            double dmax = 0.0;
+                            for (int i = 0; i < poly.n; ++i) dmax = std::max(dmax, nt.dot(ct - poly.p[i]));
+                            const double depth_ratio = dmax / std::min(hb.min_edge, tb.min_edge);
+                            if (depth_ratio > tot.worst_depth) tot.worst_depth = depth_ratio, tot.worst_hit = c.hit_block, tot.worst_target = c.target_block;
+                            // the sub-contact's anchor, found or new
+                            const int cell = v * n + u;
+                            SubAnchor* anchor = nullptr;
+                            for (auto& a : c.subs)
+                                if (a.cell == cell && a.target_face == tf) anchor = &a;
+                            const bool fresh = anchor == nullptr;
+                            if (fresh) {
+                                c.subs.push_back(SubAnchor{cell, tf});
+                                anchor = &c.subs.back();
+                            }
+                            anchor->seen = true;
+                            // the pressure centre on the target plane: both blocks are pushed there
+                            const Vec3 xs = in.moment / in.d1;
+                            const NodeWeights wh = node_weights(hb, c.hit_face, xs), wt = node_weights(tb, tf, xs);
+                            const Vec3 vrel = wh.velocity(hb) - wt.velocity(tb);
+                            const double closing = -vrel.dot(nt);
+                            // normal: the exact integral of kn·d, plus the dashpot, never pulling
+                            const double fn_el = law_.kn * in.d1;
+                            const double fn = std::max(0.0, fn_el + cn_area * in.area * closing);
+                            tot.dissipated += (fn - fn_el) * closing * dt;
+                            tot.stored += 0.5 * law_.kn * in.d2;
+                            Vec3 fs = Vec3::Zero();
+                            if (law_.ks > 0.0 && fn > 0.0) {
+                                // the shear offset grows with the relative tangential motion at the
+                                // pressure centre over the step (the half-step velocity is the one
+                                // the positions drifted with); laid at zero on first touch
+                                const bool lay = fresh || anchor->energy < 0.0;
+                                if (lay) anchor->u.setZero();
+                                const Vec3 vt_rel = vrel - vrel.dot(nt) * nt;
+                                Vec3 u_t = anchor->u - anchor->u.dot(nt) * nt + vt_rel * dt;
+                                // the spring's stiffness ks·A follows the contact area; the offset
+                                // is scaled so that a change of area neither makes nor takes spring
+                                // energy (½ks·A·u² kept: u scaled by √(A_old/A))
+                                if (!lay && anchor->area > 0.0) u_t *= std::sqrt(anchor->area / in.area);
+                                anchor->area = in.area;
+                                const double ks_a = law_.ks * in.area;
+                                const Vec3 f_el = -ks_a * u_t;
+                                const double cap = law_.friction * fn;
+                                if (f_el.norm() > cap) {
+                                    // slip: the spring is capped at μ·Fn, the offset shrinks to match
+                                    fs = cap * f_el / f_el.norm();
+                                    const Vec3 u_new = -fs / ks_a;
+                                    tot.dissipated += fs.norm() * (u_t - u_new).norm();
+                                    anchor->u = u_new;
+                                    anchor->energy = 0.5 * fs.squaredNorm() / ks_a;
+                                } else {
+                                    // stick: spring plus shear dashpot, trimmed so the sum stays ≤ μ·Fn
+                                    fs = f_el - ct_area * in.area * vt_rel;
+                                    if (fs.norm() > cap) fs *= cap / fs.norm();
+                                    anchor->u = u_t;
+                                    anchor->energy = 0.5 * ks_a * u_t.squaredNorm();
+                                    tot.dissipated -= (fs - f_el).dot(vt_rel) * dt;
+                                }
+                                tot.stored += anchor->energy;
+                            } else {
+                                // no normal force: the anchor is given up (re-laid at the next touch)
+                                tot.dissipated += std::max(0.0, anchor->energy);
+                                anchor->energy = -1.0;
+                                anchor->area = 0.0;
+                            }
+                            const Vec3 force = fn * nt + fs;
+                            if (keep_forces) {
+                                c.sub_forces.push_back({wh, wt, force});
+                            } else {
+                                wh.add(hb, force);
+                                wt.add(tb, -force);
+                            }
+                            ++tot.active;
+                        }
+                }
+            }
+        }
+        // anchors out of contact release their shear springs: that energy is dissipated
+        size_t kept = 0;
+        for (size_t i = 0; i < c.subs.size(); ++i) {
+            if (c.subs[i].seen) c.subs[kept++] = c.subs[i];
+            else tot.dissipated += std::max(0.0, c.subs[i].energy);
+        }
+        c.subs.resize(kept);
+    }
+}
+
+}  // namespace cairn::dem

@@ -1,0 +1,181 @@
+// The overlap scheme in use: crossing edges, collinear pairs, independence of block order, of the
+// sub-division and of the mesh, and a block that holds under a load below the Coulomb limit.
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <string>
+
+#include "dem/block_builder.hpp"
+#include "dem/contact.hpp"
+#include "dem/world.hpp"
+#include "dem_test_util.hpp"
+#include "scene/scene_io.hpp"
+#include "support/scene_builder.hpp"
+
+using namespace cairn;
+
+namespace {
+
+Scene overlap_scene(double friction = 0.6) {
+    Scene s = test::stone_scene(friction);
+    s.contact.scheme = ContactScheme::overlap;
+    return s;
+}
+
+// resultant contact force on block 0 of two blocks whose edges cross: A's bottom edge runs along
+// x (A turned 45° about x), B's top edge along y (B turned 45° about y); A's edge sits `depth`
+// below B's and is shifted 0.05 m along itself, between the paper grid's points
+Vec3 crossing_force(ContactScheme scheme, double depth) {
+    Scene s = overlap_scene();
+    s.contact.scheme = scheme;
+    const double h = std::sqrt(0.5);
+    add_box(s, "A", Vec3(1, 1, 1), Vec3(0.05, 0, h - depth), false, Quat(Eigen::AngleAxisd(M_PI / 4, Vec3::UnitX())));
+    add_box(s, "B", Vec3(1, 1, 1), Vec3(0, 0, -h), true, Quat(Eigen::AngleAxisd(M_PI / 4, Vec3::UnitY())));
+    std::vector<dem::Block> blocks;
+    for (const auto& d : s.blocks) blocks.push_back(dem::make_block(d, s));
+    dem::ContactSet cs;
+    cs.configure(s.contact, 0.05);
+    cs.refresh(blocks);
+    cs.apply(blocks, 1e-4);
+    Vec3 f = Vec3::Zero();
+    for (const auto& fn : blocks[0].f) f += fn;
+    return f;
+}
+
+// time of the first zero crossing of the tilt about y, s (linear interpolation); -1 if none
+double first_impact(Backend& b, double duration) {
+    double t_prev = 0, th_prev = 0, hit = -1;
+    test::run_dem(b, duration, [&](const Sample& s) {
+        Eigen::AngleAxisd aa(s.blocks[0].orientation);
+        const double th = aa.angle() * aa.axis().y();
+        if (hit < 0 && s.t > 0 && th_prev > 0 && th <= 0) hit = t_prev + th_prev / (th_prev - th) * (s.t - t_prev);
+        t_prev = s.t;
+        th_prev = th;
+    });
+    return hit;
+}
+
+Scene rocking(int subdivision) {
+    return load_scene(std::string(CAIRN_SOURCE_DIR) + "/scenarios/paper/rocking.toml",
+                      {{"contact.scheme", "\"overlap\""}, {"contact.subdivision", std::to_string(subdivision)}});
+}
+
+}  // namespace
+
+TEST_CASE("crossing edges are found: a penalty on the penetration that grows as its cube", "[dem][contact]") {
+    const double d = 2e-3;
+    const Vec3 f1 = crossing_force(ContactScheme::overlap, d), f2 = crossing_force(ContactScheme::overlap, 2 * d);
+    INFO("force at " << d << " m: " << f1.transpose() << ", at twice: " << f2.transpose());
+    // the overlap of two crossing wedges is a cone with its apex at the crossing: self-similar in
+    // the depth, so ∫kn·d dA scales as depth³ exactly (rounding only)
+    CHECK(f1.z() > 0.0);
+    CHECK(f2.z() / f1.z() == Approx(8.0).epsilon(1e-9));
+    // symmetric crossing: the push is straight up
+    CHECK(f1.head<2>().norm() < 1e-9 * f1.z());
+    // the paper's node-to-face rule sees no hitting point inside B and misses it
+    CHECK(crossing_force(ContactScheme::paper, d).norm() == 0.0);
+}
+
+TEST_CASE("contact forces act as collinear pairs: a free pair keeps its angular momentum", "[dem][contact]") {
+    Scene s = overlap_scene(0.5);
+    s.gravity = Vec3::Zero();
+    add_box(s, "A", Vec3(0.5, 0.4, 0.3), Vec3(0, 0, 0), false);
+    add_box(s, "B", Vec3(0.4, 0.5, 0.3), Vec3(0.62, 0.1, 0.05), false, Quat(Eigen::AngleAxisd(0.3, Vec3(0.2, 0.5, 1).normalized())));
+    s.blocks[1].velocity = Vec3(-0.5, 0.05, 0);
+    s.blocks[1].angular_velocity = Vec3(0.3, -0.2, 1.0);
+    dem::World w(s, 0.05);
+    w.start(2e-5);
+    auto momentum = [&] {
+        Vec3 l = Vec3::Zero();
+        for (const auto& b : w.blocks()) l += b.body.mass * b.body.x.cross(b.body.v) + b.body.L;
+        return l;
+    };
+    const Vec3 l0 = momentum();
+    int touched = 0;
+    for (int i = 0; i < 10000; ++i) {
+        const bool ok = w.step();
+        INFO("step " << i << ": " << w.failure());
+        REQUIRE(ok);
+        touched = std::max(touched, w.active_contacts());
+    }
+    REQUIRE(touched > 0);
+    // every force pair is equal and opposite at one point: only rounding changes L
+    CHECK((momentum() - l0).norm() < 1e-12 * (l0.norm() + 1.0));
+}
+
+TEST_CASE("renaming and reordering equal blocks gives the same trajectory", "[dem][contact]") {
+    auto stack = [](bool reversed) {
+        Scene s = overlap_scene(0.6);
+        s.run.duration = 0.3;
+        const double d = 0.2 * 9.81 * 2600 / 3e7;   // static penetration of a 0.2 m block
+        struct Item { std::string name; Vec3 at; };
+        std::vector<Item> items = {{"lower", Vec3(0, 0, 0.1 - d)}, {"upper", Vec3(0.05, 0.02, 0.3 - 2 * d)}};
+        if (reversed) std::swap(items[0], items[1]), items[0].name = "z1", items[1].name = "a2";
+        for (const auto& it : items) add_box(s, it.name, Vec3(0.4, 0.4, 0.2), it.at, false);
+        s.blocks[reversed ? 0 : 1].velocity = Vec3(0.05, 0, 0);
+        add_box(s, "base", Vec3(2, 2, 0.5), Vec3(0, 0, -0.25), true);
+        auto b = test::build_dem(s);
+        std::vector<Vec3> upper;
+        test::run_dem(*b, 0.3, [&](const Sample& x) { upper.push_back(x.blocks[reversed ? 0 : 1].position); });
+        return upper;
+    };
+    const auto a = stack(false), b = stack(true);
+    REQUIRE(a.size() == b.size());
+    double worst = 0.0;
+    for (size_t i = 0; i < a.size(); ++i) worst = std::max(worst, (a[i] - b[i]).norm());
+    INFO("largest difference " << worst << " m");
+    // the same physics; only the order of sums differs: round-off
+    CHECK(worst < 1e-10);
+}
+
+TEST_CASE("rocking at the paper's kn: the first impact does not depend on the sub-division or the mesh", "[dem][contact][rocking]") {
+    double t[3];
+    int i = 0;
+    for (int n : {2, 4, 8}) {
+        auto b = test::build_dem(rocking(n));
+        t[i++] = first_impact(*b, 1.2);
+    }
+    INFO("first impact n = 2, 4, 8: " << t[0] << ", " << t[1] << ", " << t[2] << " s");
+    // the normal force is exact for any n; the shear converges as n grows: 0.2 % (measured 0.12 %)
+    CHECK(t[1] == Approx(t[0]).epsilon(2e-3));
+    CHECK(t[2] == Approx(t[0]).epsilon(2e-3));
+    Scene s = rocking(2);
+    s.blocks[0].model = BlockModel::deformable;   // 2 x 2 x 2 mesh in the scene
+    s.blocks[0].mesh.mass = MassScheme::corrected;
+    auto d = test::build_dem(s);
+    const double td = first_impact(*d, 1.2);
+    INFO("deformable 2 x 2 x 2, corrected mass: " << td << " s");
+    // the mesh changes neither the contact integral nor (E = 30 GPa) the motion: 0.2 % as above
+    CHECK(td == Approx(t[0]).epsilon(2e-3));
+}
+
+TEST_CASE("a block loaded below the Coulomb limit with part of its base lifted holds", "[dem][contact][friction]") {
+    // paper case (c), sticking: H = 0.5 W at the centre of a 0.5 m cube, μ = 0.6. The moment puts
+    // the resultant 0.125 m off centre, beyond the kern (B/6 = 0.083 m): a triangular pressure
+    // over 3·(0.25 − 0.125) = 0.375 m of the base, so the contact area is 0.1875 m² and the
+    // elastic shear H/(ks·A) = 1594.125/(3e7·0.1875) = 2.83e-4 m
+    const double elastic = 1594.125 / (3e7 * 0.1875);
+    for (double zeta : {0.0, 0.1}) {
+        Scene s = load_scene(std::string(CAIRN_SOURCE_DIR) + "/scenarios/paper/friction_stick.toml",
+                             {{"contact.scheme", "\"overlap\""}, {"run.duration", "5.0"}});
+        if (zeta > 0) s.contact.damping_rule = ContactDampingRule::ratio, s.contact.damping = zeta;
+        auto b = test::build_dem(s);
+        const double x0 = b->sample().probes[0].x();   // probe "base": the centre of the bottom face
+        double worst = 0.0, early = 0.0, late = 0.0;
+        int n_early = 0, n_late = 0;
+        test::run_dem(*b, 5.0, [&](const Sample& x) {
+            const double u = x.probes[0].x() - x0;
+            worst = std::max(worst, std::abs(u));
+            if (x.t >= 1.0 && x.t < 2.0) early += u, ++n_early;
+            if (x.t >= 4.0) late += u, ++n_late;
+        });
+        early /= n_early;
+        late /= n_late;
+        INFO("zeta " << zeta << ": largest shear " << worst << " m, mean 1-2 s " << early << ", 4-5 s " << late);
+        // elastic only: within twice the static estimate (the ramp's overshoot and the block's
+        // tilt add to it), and no creep: the mean offset moves less than 5 % of the elastic shear
+        // in 3 s (the issue saw 18 mm/s of sliding)
+        CHECK(worst < 2.0 * elastic);
+        CHECK(std::abs(late - early) < 0.05 * elastic);
+    }
+}
