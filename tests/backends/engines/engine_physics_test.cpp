@@ -197,7 +197,7 @@ TEST_CASE("every backend: the same scene twice gives identical samples", "[engin
 }
 
 TEST_CASE("reference engines: the drum column overturns at a/g = B/H plus the ramp's lag", "[engines][structures]") {
-    for (const std::string engine : engine_names()) {
+    for (const std::string& engine : engine_names()) {
         CAPTURE(engine);
         const Scene s = load_scene(std::string(CAIRN_SOURCE_DIR) + "/scenarios/structures/column_pushover.toml", {});
         std::vector<Sample> samples;

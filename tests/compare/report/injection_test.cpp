@@ -1,5 +1,6 @@
 // a scene whose text carries every gnuplot and shell metacharacter, validated into an output
 // directory whose path carries quotes, spaces and $( ): nothing of it runs, the figures still render
+#include <algorithm>
 #include <catch2/catch.hpp>
 
 #include <filesystem>
@@ -46,9 +47,11 @@ TEST_CASE("validate draws the figures of a scene full of metacharacters and runs
     const std::string evil = "\" ' \\ `touch SENTINEL_bq` $(touch SENTINEL_dollar) ; # @m "
                              "system('touch SENTINEL_sys') system(\"touch SENTINEL_sys2\") '< touch SENTINEL_pipe'";
     const std::string description = "x\"; system 'touch SENTINEL_desc' #\n" + evil + "\nlast line \\";
-    // names: everything but ',' and a newline (names must stay usable as CSV columns)
-    const std::string block = "A" + evil;
-    const std::string probe = "p" + evil;
+    // names: everything but ',', '"' and a newline (names must stay usable as CSV columns)
+    std::string name_evil = evil;
+    name_evil.erase(std::remove(name_evil.begin(), name_evil.end(), '"'), name_evil.end());
+    const std::string block = "A" + name_evil;
+    const std::string probe = "p" + name_evil;
     const std::string scene_name = "scene '\"`touch SENTINEL_file`$(touch SENTINEL_file2);#@m system('touch SENTINEL_f') \\.toml";
     std::ofstream(dir / scene_name)
         << "description = " << toml_string(description) << "\n"

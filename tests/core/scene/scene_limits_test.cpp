@@ -54,7 +54,7 @@ TEST_CASE("a scene beyond 16 MiB is refused before parsing", "[scene][limits]") 
     CHECK_THAT(error_of(big), Contains("bad.toml: ") && Contains("bytes, beyond the limit of 16777216 bytes"));
 }
 
-TEST_CASE("--set: control characters and invalid UTF-8 are refused naming the key", "[scene][limits][override]") {
+TEST_CASE("overrides: control characters and invalid UTF-8 are refused naming the key", "[scene][limits][override]") {
     CHECK_THAT(error_of(kBaseScene, {{"description", "a\x01z"}}),
                Contains("--set description = a\\x01z: the value contains a control character (0x01)"));
     CHECK_THAT(error_of(kBaseScene, {{"description", "line\nbreak"}}),
@@ -67,7 +67,7 @@ TEST_CASE("--set: control characters and invalid UTF-8 are refused naming the ke
     CHECK(error_of(kBaseScene, {{"description", "a\tb \xc3\xa9 \xe7\x9f\xb3"}}).empty());
 }
 
-TEST_CASE("--set: too many key parts, nesting or size are refused naming the key", "[scene][limits][override]") {
+TEST_CASE("overrides: too many key parts, nesting or size are refused naming the key", "[scene][limits][override]") {
     CHECK_THAT(error_of(kBaseScene, {{dotted(33), "1"}}), Contains("--set a.a.a") && Contains("a key of 33 parts"));
     CHECK_THAT(error_of(kBaseScene, {{"description", std::string(100, '[') + std::string(100, ']')}}),
                Contains("--set description:1: [[[[") && Contains("nested deeper than 32"));

@@ -173,7 +173,7 @@ solver = "pgs"
     CHECK(s.reference->values.at("axis_y") == 1.0);
     const auto& bullet = s.backend_settings.at("bullet");
     CHECK(std::get<long long>(bullet.at("iterations").value) == 50);
-    CHECK(bullet.at("iterations").origin == "all.toml:68");
+    CHECK(bullet.at("iterations").origin == "all.toml:69");
     CHECK(std::get<double>(bullet.at("erp").value) == 0.2);
     CHECK(std::get<bool>(bullet.at("split").value));
     CHECK(std::get<std::string>(bullet.at("solver").value) == "pgs");
