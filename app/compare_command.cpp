@@ -114,7 +114,7 @@ int compare_command(const CompareOptions& options) {
     std::unique_ptr<StagedDir> staged;
     try {
         staged = std::make_unique<StagedDir>(out_dir, true);
-        staged->carry_over({"runs", "figures", "data", "report.md", "index.html", "differences.csv", "peaks.csv",
+        staged->carry_over({"runs", "figures", "data", "report.md", "index.html", "replay.html", "differences.csv", "peaks.csv",
                             "energy.csv"},
                            StagedDir::Carry::link);
     } catch (const Error& e) {

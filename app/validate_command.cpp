@@ -12,6 +12,7 @@
 #include "output/staged_dir.hpp"
 #include "registry.hpp"
 #include "run/stop.hpp"
+#include "report/case_replay.hpp"
 #include "report/figures.hpp"
 #include "bench/bench_report.hpp"
 #include "report/validation_report.hpp"
@@ -92,7 +93,7 @@ int validate_command(const ValidateOptions& options) {
     std::unique_ptr<StagedDir> staged;
     try {
         staged = std::make_unique<StagedDir>(options.out_dir, true);
-        staged->carry_over({"runs", "figures", "summary.csv", "report.md", "index.html"}, StagedDir::Carry::copy);
+        staged->carry_over({"runs", "figures", "replays", "summary.csv", "report.md", "index.html"}, StagedDir::Carry::copy);
     } catch (const Error& e) {
         std::cerr << "error: " << e.what() << "\n";
         return kExitBadInput;
@@ -114,6 +115,13 @@ int validate_command(const ValidateOptions& options) {
     ctx.jobs = options.jobs;
     ctx.command = command_line(options);
     const auto figures = report::write_figures(plan.cases, dir.string());
+    // one 3-D replay page per case, its variants side by side, beside the case's figures
+    for (const auto& c : plan.cases) {
+        std::string note;
+        const std::string page = report::write_case_replay(c, dir.string(), "replays/" + c.name + ".html", note);
+        if (!page.empty()) ctx.replays[c.name] = page;
+        else ctx.replay_note = note;
+    }
     ctx.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     auto doc = report::build_report(plan.cases, figures, ctx);
     // the inertia study and the benches, when their outputs sit beside the validation; links in the

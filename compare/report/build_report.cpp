@@ -153,6 +153,10 @@ Document build_report(const std::vector<CaseResult>& cases, const FigureSet& fig
                                  ? c.name + ": the cube on the incline every 0.25 s, per variant (x-z projection)"
                                  : c.name + ": every variant over the analytic curve (top: " + analytic_label(c) +
                                        "), difference (bottom)");
+        if (const auto page = ctx.replays.find(c.name); page != ctx.replays.end())
+            d.page(page->second, c.name + ": 3-D replay of every variant side by side (" + page->second + ")");
+        else if (!ctx.replay_note.empty())
+            d.paragraph(c.name + ": " + ctx.replay_note + ".");
         Table m{{"variant", "metric", "value", "reference", "rel. error", "tolerance", "verdict", "basis"}, {}};
         for (const auto& r : c.runs) {
             if (!r.analysed) {

@@ -39,6 +39,14 @@ void Document::image(std::string path, std::string caption) {
     blocks.push_back(std::move(b));
 }
 
+void Document::page(std::string path, std::string caption) {
+    Block b;
+    b.kind = Block::Kind::page;
+    b.image = std::move(path);
+    b.text = std::move(caption);
+    blocks.push_back(std::move(b));
+}
+
 void Document::contents() {
     Block b;
     b.kind = Block::Kind::contents;
@@ -47,7 +55,7 @@ void Document::contents() {
 
 void append(Document& into, const Document& from, const std::string& image_prefix) {
     for (Block b : from.blocks) {
-        if (b.kind == Block::Kind::image) b.image = image_prefix + b.image;
+        if (b.kind == Block::Kind::image || b.kind == Block::Kind::page) b.image = image_prefix + b.image;
         into.blocks.push_back(std::move(b));
     }
 }
@@ -123,6 +131,7 @@ std::string to_markdown(const Document& d) {
                 break;
             }
             case Block::Kind::image: o << "![" << b.text << "](" << b.image << ")\n\n*" << b.text << "*\n\n"; break;
+            case Block::Kind::page: o << "[" << b.text << "](" << b.image << ")\n\n"; break;
         }
     }
     return o.str();
@@ -180,6 +189,11 @@ std::string to_html(const Document& d) {
             case Block::Kind::image:
                 o << "<figure><img src=\"" << esc(b.image) << "\" alt=\"" << esc(b.text) << "\"><figcaption>"
                   << esc(b.text) << "</figcaption></figure>\n";
+                break;
+            case Block::Kind::page:
+                o << "<figure><iframe src=\"" << esc(b.image) << "\" title=\"" << esc(b.text)
+                  << "\" loading=\"lazy\" style=\"width: 100%; height: 460px; border: 0\"></iframe><figcaption><a href=\""
+                  << esc(b.image) << "\">" << esc(b.text) << "</a></figcaption></figure>\n";
                 break;
         }
     }

@@ -26,12 +26,12 @@ std::string anchor_of(const std::string& heading);
 
 /// One block of the document.
 struct Block {
-    enum class Kind { heading, paragraph, bullets, table, image, contents } kind = Kind::paragraph;
+    enum class Kind { heading, paragraph, bullets, table, image, contents, page } kind = Kind::paragraph;
     int level = 2;                       ///< heading level (1-3)
     std::string text;                    ///< heading, paragraph, image caption
     std::vector<std::string> items;      ///< bullets
     Table table;
-    std::string image;                   ///< image path relative to the document
+    std::string image;                   ///< image (or embedded page) path relative to the document
 };
 
 /// The document.
@@ -43,11 +43,13 @@ struct Document {
     void bullets(std::vector<std::string> items);
     void table(Table t);
     void image(std::string path, std::string caption);
+    /// another HTML page beside the document: a link in Markdown, shown inline (an iframe) in HTML
+    void page(std::string path, std::string caption);
     /// a table of contents: links to every level-2 and level-3 heading of the document
     void contents();
 };
 
-/// append the blocks of `from` to `into` (not its title), image paths prefixed by `image_prefix`
+/// append the blocks of `from` to `into` (not its title), image and page paths prefixed by `image_prefix`
 /// (the folder of `from` relative to `into`)
 void append(Document& into, const Document& from, const std::string& image_prefix);
 

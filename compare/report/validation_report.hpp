@@ -1,6 +1,7 @@
 #pragma once
 /// The outputs of `cairn validate`: summary.csv, report.md / index.html, and the terminal verdict.
 
+#include <map>
 #include <string>
 #include <vector>
 
@@ -24,6 +25,8 @@ struct ReportContext {
     double wall_seconds = 0.0;                   ///< wall time of the whole validation, s
     int jobs = 1;                                ///< threads used
     std::string command;                         ///< the command line, for reproduction
+    std::map<std::string, std::string> replays;  ///< case → its 3-D replay page, relative to the output dir
+    std::string replay_note;                     ///< why a case has no replay page, or ""
 };
 
 /// verdict of a run: "pass k/k" (", n not comparable" when some metrics are), "miss j/k", "not

@@ -8,6 +8,7 @@
 #include <sstream>
 
 #include "output/atomic_write.hpp"
+#include "report/case_replay.hpp"
 #include "report/figures.hpp"
 #include "report/palette.hpp"
 #include "report/text.hpp"
@@ -223,6 +224,9 @@ report::Document write_compare_report(const CaseResult& result, const CompareCon
 
     // per block figures
     d.heading(2, "Blocks");
+    std::string replay_note;
+    if (report::write_case_replay(result, dir, "replay.html", replay_note).empty()) d.paragraph(replay_note + ".");
+    else d.page("replay.html", "3-D replay of every variant side by side (replay.html)");
     if (!images.empty() && int(blocks.size()) > ctx.max_block_figures)
         d.paragraph("Figures for the first " + std::to_string(ctx.max_block_figures) + " of " +
                     std::to_string(blocks.size()) + " free blocks (and their histories in data/); every block is in "
@@ -285,6 +289,7 @@ report::Document write_compare_report(const CaseResult& result, const CompareCon
                "first " + std::to_string(ctx.max_block_figures) + ").",
                "data/<variant>_block<k>_difference.csv: the same block's difference to the baseline.",
                "data/<variant>_energy.csv: the energy ledger (J) and contact count over time.",
+               "replay.html: the 3-D replay of every variant (self-contained, works offline).",
                "runs/<scene>/<variant>/: each run's trajectory.csv and run.json, as cairn run writes them."});
     return d;
 }

@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include "cairn_process.hpp"
+#include "report/replay.hpp"
 
 namespace fs = std::filesystem;
 using namespace cairn::test;
@@ -107,6 +108,23 @@ TEST_CASE("cairn compare runs a column on dem and Bullet and writes the comparis
     CHECK(std::stod(rest[4]) < 1.96e-4);   // largest distance (m)
     CHECK(rest[3] == "never");             // position diverged at
     CHECK(rest[6] == "never");             // rotation diverged at
+    // the 3-D replay of every variant beside the block figures, linked from both renderings
+    const std::string html = read_file(out / "index.html");
+    if (!cairn::replay_available()) {
+        WARN("cairn is built without the 3-D replay: checking that the report says so");
+        CHECK_FALSE(fs::exists(out / "replay.html"));
+        CHECK_THAT(md, Contains("no 3-D replay: this cairn was built without it"));
+        return;
+    }
+    const std::string page = read_file(out / "replay.html");
+    CHECK_THAT(page, Contains("window.CAIRN_REPLAY = "));
+    for (const char* v : {"dem-rigid", "dem-deformable", "bullet-rigid", "bullet-matched"})
+        CHECK_THAT(page, Contains(std::string("\"label\":\"") + v + "\""));
+    CHECK_THAT(html, Contains("<iframe src=\"replay.html\"") && Contains("<a href=\"replay.html\">"));
+    CHECK_THAT(md, Contains("](replay.html)"));
+    // the link sits in the Blocks section, before the energies
+    CHECK(md.find("](replay.html)") > md.find("## Blocks"));
+    CHECK(md.find("](replay.html)") < md.find("## Energy"));
 }
 
 TEST_CASE("bare cairn prints the usage and the commands, exit 2", "[app][cli]") {
