@@ -31,20 +31,23 @@ void Document::table(Table t) {
     b.table = std::move(t);
     blocks.push_back(std::move(b));
 }
-void Document::image(std::string path, std::string caption) {
+namespace {
+/// a block showing the file at `path` (relative to the document) with its caption
+Block file_block(Block::Kind kind, std::string path, std::string caption) {
     Block b;
-    b.kind = Block::Kind::image;
+    b.kind = kind;
     b.image = std::move(path);
     b.text = std::move(caption);
-    blocks.push_back(std::move(b));
+    return b;
+}
+}  // namespace
+
+void Document::image(std::string path, std::string caption) {
+    blocks.push_back(file_block(Block::Kind::image, std::move(path), std::move(caption)));
 }
 
 void Document::page(std::string path, std::string caption) {
-    Block b;
-    b.kind = Block::Kind::page;
-    b.image = std::move(path);
-    b.text = std::move(caption);
-    blocks.push_back(std::move(b));
+    blocks.push_back(file_block(Block::Kind::page, std::move(path), std::move(caption)));
 }
 
 void Document::contents() {

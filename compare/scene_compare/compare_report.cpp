@@ -289,7 +289,6 @@ report::Document write_compare_report(const CaseResult& result, const CompareCon
                "first " + std::to_string(ctx.max_block_figures) + ").",
                "data/<variant>_block<k>_difference.csv: the same block's difference to the baseline.",
                "data/<variant>_energy.csv: the energy ledger (J) and contact count over time.",
-               "replay.html: the 3-D replay of every variant (self-contained, works offline).",
                "runs/<scene>/<variant>/: each run's trajectory.csv and run.json, as cairn run writes them."});
     return d;
 }

@@ -4,6 +4,7 @@
 #include <sstream>
 
 #include "cairn_process.hpp"
+#include "report/replay.hpp"
 
 namespace fs = std::filesystem;
 using namespace cairn::test;
@@ -54,6 +55,17 @@ TEST_CASE("cairn validate on stability with dem writes the summary, the report a
     CHECK_THAT(md, Contains("| case | dem-rigid | dem-deformable |") && Contains("| [stability](#stability) | [pass](#stability) |"));
     CHECK(fs::exists(out / "runs" / "stability" / "dem-rigid" / "trajectory.csv"));
     CHECK(fs::exists(out / "runs" / "stability" / "dem-rigid" / "run.json"));
+    // the case's 3-D replay beside its figures (or a note when cairn is built without it)
+    if (!cairn::replay_available()) {
+        CHECK_FALSE(fs::exists(out / "replays"));
+        CHECK_THAT(md, Contains("stability: no 3-D replay: this cairn was built without it"));
+        return;
+    }
+    const std::string page = read_file(out / "replays" / "stability.html");
+    CHECK_THAT(page, Contains("\"label\":\"dem-rigid\"") && Contains("window.CAIRN_REPLAY = "));
+    CHECK_THAT(md, Contains("](replays/stability.html)"));
+    CHECK(md.find("](replays/stability.html)") > md.find("## stability"));
+    CHECK_THAT(read_file(out / "index.html"), Contains("<iframe src=\"replays/stability.html\""));
 }
 
 TEST_CASE("cairn validate rejects an unknown case or backend with exit code 2", "[app][validate]") {
