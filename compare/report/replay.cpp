@@ -120,9 +120,4 @@ std::string replay_html(const std::string& title, const std::vector<ReplayRun>& 
     return page;
 }
 
-std::string replay_iframe(const std::string& relative_path, int height_px) {
-    return "<iframe src=\"" + report::html_text(relative_path) + "\" style=\"width: 100%; height: " +
-           std::to_string(height_px) + "px; border: 0\" title=\"3-D replay\" loading=\"lazy\"></iframe>";
-}
-
 }  // namespace cairn

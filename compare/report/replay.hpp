@@ -51,7 +51,4 @@ bool replay_available();
 /// the whole page of the runs, titled `title`; throws cairn::Error when !replay_available()
 std::string replay_html(const std::string& title, const std::vector<ReplayRun>& runs);
 
-/// an <iframe> showing the replay page at `relative_path` (from the embedding page), for reports
-std::string replay_iframe(const std::string& relative_path, int height_px = 420);
-
 }  // namespace cairn
