@@ -8,14 +8,12 @@
 #include <iostream>
 #include <thread>
 
-#ifdef _OPENMP
-#include <omp.h>
-#endif
 
 #include "commands.hpp"
 #include "error.hpp"
 #include "output/atomic_write.hpp"
 #include "output/staged_dir.hpp"
+#include "pool_backends.hpp"
 #include "progress_line.hpp"
 #include "registry.hpp"
 #include "report/document.hpp"
@@ -128,16 +126,7 @@ int compare_command(const CompareOptions& options) {
     PoolProgress progress("compare " + plan.cases.front().name, plan.cases.front().runs.size(),
                           plan.cases.front().scene.run.duration);
     if (show) plan.progress = [&progress](size_t run, double f) { progress.update(run, f); };
-    const bool one_thread = jobs > 1;
-    validation::run_plan(plan, [one_thread](const std::string& name) {
-#ifdef _OPENMP
-        // called on the pool thread that runs the job: its OpenMP regions use one thread
-        if (one_thread) omp_set_num_threads(1);
-#else
-        (void)one_thread;
-#endif
-        return make_backend(name);
-    });
+    validation::run_plan(plan, pool_backend_factory(jobs));
     progress.clear();
     if (stop_requested()) return interrupted_keeping("report", out_dir);
 

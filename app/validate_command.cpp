@@ -7,6 +7,7 @@
 #include <iostream>
 
 #include "commands.hpp"
+#include "pool_backends.hpp"
 #include "error.hpp"
 #include "output/atomic_write.hpp"
 #include "output/staged_dir.hpp"
@@ -103,7 +104,7 @@ int validate_command(const ValidateOptions& options) {
     plan.final_dir = options.out_dir;
     std::error_code ec;
 
-    validation::run_plan(plan, [](const std::string& name) { return make_backend(name); });
+    validation::run_plan(plan, pool_backend_factory(plan.jobs));
     if (stop_requested()) {
         return interrupted_keeping("report", options.out_dir);
     }
