@@ -3,6 +3,7 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <utility>
 #include <iostream>
 
 #include "error.hpp"
@@ -105,10 +106,10 @@ JobOutcome execute_run(const RunJob& job) {
     try {
         // the 3-D views (--vtk, --replay) take the samples beside the trajectory
         views->open(dir.string());
-        TeeSink sinks({&csv, views.get(), &progress});
-        TeeSink quiet_sinks({&csv, views.get()});
-        result = run_scene(*backend, scene, request.options,
-                           job.progress ? static_cast<SampleSink&>(sinks) : quiet_sinks,
+        std::vector<SampleSink*> parts{&csv, views.get()};
+        if (job.progress) parts.push_back(&progress);
+        TeeSink sinks(std::move(parts));
+        result = run_scene(*backend, scene, request.options, sinks,
                            job.progress ? progress.function() : ProgressFn{});
     } catch (const Error& e) {
         o.status = JobStatus::refused;   // nothing written: the staging directory goes
