@@ -100,7 +100,11 @@ TEST_CASE("reference engines: rigid inelastic 10 cm drop does not rebound", "[en
 TEST_CASE("reference engines: H = 0.5 W slides at mu = 0.4 and holds at mu = 0.6", "[engines]") {
     const std::string engine = GENERATE(from_range(engine_names()));
     const double mu = GENERATE(0.4, 0.6);
-    CAPTURE(engine, mu);
+    // H at the centroid, or at the centre of the base (a moment about the centre of mass that the
+    // base's friction balances: Bullet once crept there because its solver left the load's
+    // torque impulse out of what friction acts on)
+    const double point_z = GENERATE(0.0, -0.25);
+    CAPTURE(engine, mu, point_z);
     Scene s = base_scene("friction");
     s.contact.friction = mu;
     add_box(s, "A", Vec3(0.5, 0.5, 0.5), Vec3(0, 0, 0.25), false);
@@ -109,7 +113,7 @@ TEST_CASE("reference engines: H = 0.5 W slides at mu = 0.4 and holds at mu = 0.6
     LoadDef h;
     h.block = 0;
     h.force = Vec3(0, 0.5 * weight, 0);
-    h.point = Vec3::Zero();   // at the centroid: no tipping (physics.md case c)
+    h.point = Vec3(0, 0, point_z);   // no tipping either way: e = H h / W <= 0.125 m < B/2
     s.loads.push_back(h);
     // least-squares fit y = c0 + c1 t + c2 t² over 0.1 ... 0.5 s: a = 2 c2, insensitive to the
     // small rocking of a soft contact under the off-base push
