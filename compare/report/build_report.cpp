@@ -5,6 +5,7 @@
 #include <map>
 #include <set>
 
+#include "report/miss_causes.hpp"
 #include "report/text.hpp"
 #include "report/validation_report.hpp"
 
@@ -139,6 +140,25 @@ Document build_report(const std::vector<CaseResult>& cases, const FigureSet& fig
                               r.outcome == Outcome::refused ? "" : fixed_text(r.wall_seconds, 2)});
         }
     d.table(v);
+
+    // every missed metric with the engine limitation that explains it, or none
+    Table misses{{"case", "variant", "metric", "error", "cause"}, {}, {}};
+    for (const auto& c : cases)
+        for (const auto& r : c.runs) {
+            if (!r.analysed) continue;
+            for (const auto& x : r.analysis.metrics) {
+                if (!x.judged() || x.pass()) continue;
+                const MissCause cause = miss_cause(c.scene, r.variant, x, r.dt);
+                misses.rows.push_back({c.name, r.variant.name, x.name,
+                                       x.has_reference && x.measured && x.reference != 0.0 ? percent_text(x.relative_error()) : "",
+                                       (cause.known ? "" : "unexplained: ") + cause.text});
+                misses.links.push_back({c.name, "", "", "", ""});
+            }
+        }
+    if (!misses.rows.empty()) {
+        d.heading(3, "Misses and their causes");
+        d.table(misses);
+    }
 
     d.heading(2, "Conventions");
     d.bullets(conventions());
