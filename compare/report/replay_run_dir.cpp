@@ -19,16 +19,9 @@ namespace {
 /// longest trajectory line accepted, characters (a row of 17-digit numbers for thousands of blocks)
 constexpr size_t kMaxLine = 16u << 20;
 
-/// read one line of at most kMaxLine characters; false at the end of the file
+/// one line of at most kMaxLine characters; false at the end of the file
 bool read_line(std::istream& in, std::string& line, const std::string& path) {
-    line.clear();
-    char c;
-    while (in.get(c)) {
-        if (c == '\n') return true;
-        if (line.size() >= kMaxLine) throw Error(path + ": a line longer than " + std::to_string(kMaxLine) + " characters");
-        line += c;
-    }
-    return !line.empty();
+    return report::read_bounded_line(in, line, path, kMaxLine);
 }
 
 /// a column name without its unit ("t [s]" -> "t")

@@ -45,6 +45,77 @@ std::string axes_text(const Sweep& s, const SweepRun& r) {
     return out;
 }
 
+/// per record and backend the lowest intensity that overturned the block (and whether a higher one
+/// did not), and how often the backends agree on the outcome of the same point
+void write_record_tables(const Sweep& sweep, const std::vector<SweepResult>& results, report::Document& d) {
+    std::vector<std::string> backends = sweep.plan.backends, records;
+    // point (everything but the backend) → outcome per backend ("1", "0", or the status)
+    std::map<std::string, std::map<std::string, std::string>> points;
+    std::map<std::string, std::map<std::string, std::pair<double, bool>>> lowest;   // record, backend → x, non-monotonic
+    std::vector<std::string> order;
+    for (size_t i = 0; i < sweep.runs.size(); ++i) {
+        const auto& run = sweep.runs[i];
+        const std::string rec = run.scene_name + (axes_text(sweep, run).empty() ? "" : " (" + axes_text(sweep, run) + ")") +
+                                ": " + run.record;
+        if (std::find(records.begin(), records.end(), rec) == records.end()) records.push_back(rec);
+        const std::string point = rec + "\n" + num(run.intensity, 17) + "\n" + std::to_string(run.repeat);
+        if (!points.count(point)) order.push_back(point);
+        const bool ok = results[i].status == "completed";
+        points[point][run.backend] = ok ? (results[i].overturned ? "1" : "0") : results[i].status;
+        if (ok && results[i].overturned) {
+            auto it = lowest[rec].find(run.backend);
+            if (it == lowest[rec].end() || run.intensity < it->second.first) lowest[rec][run.backend] = {run.intensity, false};
+        }
+    }
+    // a survivor above the lowest overturning intensity: the outcome is not monotonic in intensity
+    for (size_t i = 0; i < sweep.runs.size(); ++i) {
+        const auto& run = sweep.runs[i];
+        const std::string rec = run.scene_name + (axes_text(sweep, run).empty() ? "" : " (" + axes_text(sweep, run) + ")") +
+                                ": " + run.record;
+        auto it = lowest[rec].find(run.backend);
+        if (it != lowest[rec].end() && results[i].status == "completed" && !results[i].overturned &&
+            run.intensity > it->second.first)
+            it->second.second = true;
+    }
+    report::Table t;
+    t.header = {"record"};
+    for (const auto& b : backends) t.header.push_back(b);
+    for (const auto& rec : records) {
+        std::vector<std::string> row{rec};
+        for (const auto& b : backends) {
+            auto it = lowest[rec].find(b);
+            row.push_back(it == lowest[rec].end() ? "none" : num(it->second.first, 4) + " g" + (it->second.second ? " (survives above)" : ""));
+        }
+        t.rows.push_back(row);
+    }
+    d.heading(2, "Lowest overturning intensity");
+    d.paragraph("Per record, the lowest peak ground acceleration of the plan at which each backend overturned the block; "
+                "\"survives above\" marks a record under which the block stands again at a higher intensity.");
+    d.table(t);
+    if (backends.size() > 1) {
+        int agree = 0, total = 0;
+        std::vector<std::string> split;
+        for (const auto& p : order) {
+            const auto& by = points[p];
+            if (by.size() != backends.size()) continue;
+            ++total;
+            bool same = true;
+            for (const auto& [b, v] : by) same = same && v == by.begin()->second;
+            if (same) ++agree;
+            else {
+                std::string line = p.substr(0, p.find('\n')) + " at " + num(std::stod(p.substr(p.find('\n') + 1)), 4) + " g:";
+                for (const auto& [b, v] : by) line += " " + b + " " + (v == "1" ? "overturned" : v == "0" ? "stood" : v);
+                split.push_back(line);
+            }
+        }
+        d.heading(2, "Agreement between backends");
+        d.paragraph(std::to_string(agree) + " of " + std::to_string(total) +
+                    " points (record, intensity, axis values, repeat) have the same outcome on every backend" +
+                    (split.empty() ? "." : "; the others:"));
+        if (!split.empty()) d.bullets(split);
+    }
+}
+
 }  // namespace
 
 std::string write_fragility_report(const Sweep& sweep, const std::vector<SweepResult>& results, const std::string& dir) {
@@ -116,7 +187,7 @@ std::string write_fragility_report(const Sweep& sweep, const std::vector<SweepRe
             write_text_atomic((fig / (stem + ".dat")).string(), data.str());
             write_text_atomic((fig / (ida + ".dat")).string(), ida_data.str());
             const std::string head = std::string("set terminal ") + report::gnuplot_png_terminal() +
-                                     " size 900,560 font ',11'\nset grid\nset key top left\n";
+                                     " noenhanced size 900,560 font ',11'\nset grid\nset key bottom right\n";
             gp << head << "set output " << report::gnuplot_file(stem + ".png") << "\nset title "
                << report::gnuplot_string("fragility: " + panels[p]) << "\nset xlabel 'peak ground acceleration (g)'\n"
                << "set ylabel 'P(overturn)'\nset yrange [-0.05:1.05]\nset xrange [0:" << num(xmax * 1.1) << "]\n"
@@ -126,7 +197,8 @@ std::string write_fragility_report(const Sweep& sweep, const std::vector<SweepRe
                    << "set ylabel 'peak rotation / overturning angle (capped at 3)'\nset yrange [0:3.1]\nplot ";
             for (size_t k = 0; k < mine.size(); ++k) {
                 const Group& g = *mine[k];
-                const std::string c = report::variant_colour(g.backend);
+                // the backend's colour in every report (rigid contact: the sweep runs the scene as written)
+                const std::string c = report::variant_colour(g.backend == "dem" ? "dem-rigid" : g.backend + "-rigid");
                 gp << report::gnuplot_file(stem + ".dat") << " index " << k << " using 1:2 with points pt 7 ps 1.3 lc rgb '"
                    << c << "' title " << report::gnuplot_string(g.backend + " observed") << ", ";
                 if (g.fit.status == "fitted")
@@ -176,6 +248,7 @@ std::string write_fragility_report(const Sweep& sweep, const std::vector<SweepRe
         d.table(t);
     }
     for (const auto& [path, caption] : images) d.image(path, caption);
+    write_record_tables(sweep, results, d);
     {
         report::Table t;
         t.header = {"record", "source"};

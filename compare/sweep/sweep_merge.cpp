@@ -16,11 +16,8 @@ namespace cairn::sweep {
 
 namespace {
 
-std::string exact(double v) {
-    char buf[40];
-    std::snprintf(buf, sizeof buf, "%.17g", v);
-    return buf;
-}
+/// a number as exact text (17 significant digits): the same double gives the same text
+std::string exact(double v) { return report::number_text(v, 17); }
 
 }  // namespace
 

@@ -21,14 +21,7 @@ namespace {
 constexpr std::size_t kMaxLine = 1u << 20;
 
 bool read_line(std::istream& in, std::string& line, const std::string& path) {
-    line.clear();
-    char c;
-    while (in.get(c)) {
-        if (c == '\n') return true;
-        if (line.size() >= kMaxLine) throw Error(path + ": a line longer than " + std::to_string(kMaxLine) + " characters");
-        line += c;
-    }
-    return !line.empty();
+    return report::read_bounded_line(in, line, path, kMaxLine);
 }
 
 }  // namespace

@@ -11,8 +11,11 @@
 #include <set>
 #include <sstream>
 
+#include <toml++/toml.h>
+
 #include "error.hpp"
 #include "output/atomic_write.hpp"
+#include "report/text.hpp"
 #include "scene/scene_io.hpp"
 
 namespace fs = std::filesystem;
@@ -24,12 +27,8 @@ namespace {
 /// the scene loader's g (units = "g" multiplies by it), m/s²
 constexpr double kG = 9.81;
 
-/// a number as exact text ("%.17g"): the same double gives the same text
-std::string exact(double v) {
-    char buf[40];
-    std::snprintf(buf, sizeof buf, "%.17g", v);
-    return buf;
-}
+/// a number as exact text (17 significant digits): the same double gives the same text
+std::string exact(double v) { return report::number_text(v, 17); }
 
 /// FNV-1a, 64 bits, as 16 hex digits
 std::string hash_id(const std::string& s) {
@@ -43,14 +42,11 @@ std::string hash_id(const std::string& s) {
     return buf;
 }
 
-/// `s` as a TOML basic string
+/// `s` as a TOML string (escaped by toml++)
 std::string quoted(const std::string& s) {
-    std::string out = "\"";
-    for (char c : s) {
-        if (c == '"' || c == '\\') out += '\\';
-        out += c;
-    }
-    return out + "\"";
+    std::ostringstream o;
+    o << toml::value<std::string>(s);
+    return o.str();
 }
 
 /// the overrides that put a record in a scene (scale set separately)
