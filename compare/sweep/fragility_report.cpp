@@ -187,7 +187,7 @@ std::string write_fragility_report(const Sweep& sweep, const std::vector<SweepRe
             write_text_atomic((fig / (stem + ".dat")).string(), data.str());
             write_text_atomic((fig / (ida + ".dat")).string(), ida_data.str());
             const std::string head = std::string("set terminal ") + report::gnuplot_png_terminal() +
-                                     " noenhanced size 900,560 font ',11'\nset grid\nset key bottom right\n";
+                                     " noenhanced size 900,600 font ',11'\nset grid\nset key below\n";
             gp << head << "set output " << report::gnuplot_file(stem + ".png") << "\nset title "
                << report::gnuplot_string("fragility: " + panels[p]) << "\nset xlabel 'peak ground acceleration (g)'\n"
                << "set ylabel 'P(overturn)'\nset yrange [-0.05:1.05]\nset xrange [0:" << num(xmax * 1.1) << "]\n"
