@@ -12,6 +12,7 @@
 #include "commands.hpp"
 #include "error.hpp"
 #include "output/atomic_write.hpp"
+#include "registry.hpp"
 #include "run/stop.hpp"
 #include "scenes.hpp"
 #include "sweep/sweep_merge.hpp"
@@ -121,6 +122,8 @@ int sweep_command(const SweepOptions& o) {
         const bool existed = fs::exists(dir);
         try {
             sweep = load(o.plan, dir);
+            // every backend is built here: an unknown or missing one is bad input, before any run
+            for (const auto& b : sweep.plan.backends) make_backend(sweep::backend_variant(b).backend);
         } catch (const Error&) {
             // bad input leaves nothing behind: the pulse files written for the check go
             if (fresh) fs::remove_all(dir / "records");
@@ -159,8 +162,11 @@ int sweep_command(const SweepOptions& o) {
     std::vector<RunJob> jobs;
     for (const auto& r : todo) {
         RunJob j;
+        const auto v = sweep::backend_variant(r.backend);
         j.scene = r.scene;
-        j.backend = r.backend;
+        j.backend = v.backend;
+        j.contact = v.contact;
+        j.model = v.model;
         j.out_dir = sweep::run_dir(dir.string(), r.id);
         j.force = true;   // the sweep owns its run directories
         j.overrides = r.overrides;

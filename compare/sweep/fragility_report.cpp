@@ -198,7 +198,8 @@ std::string write_fragility_report(const Sweep& sweep, const std::vector<SweepRe
             for (size_t k = 0; k < mine.size(); ++k) {
                 const Group& g = *mine[k];
                 // the backend's colour in every report (rigid contact: the sweep runs the scene as written)
-                const std::string c = report::variant_colour(g.backend == "dem" ? "dem-rigid" : g.backend + "-rigid");
+                const std::string c = report::variant_colour(
+                    g.backend.find('-') != std::string::npos ? g.backend : g.backend == "dem" ? "dem-rigid" : g.backend + "-rigid");
                 gp << report::gnuplot_file(stem + ".dat") << " index " << k << " using 1:2 with points pt 7 ps 1.3 lc rgb '"
                    << c << "' title " << report::gnuplot_string(g.backend + " observed") << ", ";
                 if (g.fit.status == "fitted")

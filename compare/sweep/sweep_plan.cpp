@@ -114,6 +114,21 @@ RecordSpec read_record(const TableReader& records, const std::string& name, cons
 
 }  // namespace
 
+BackendVariant backend_variant(const std::string& name) {
+    BackendVariant v;
+    const auto dash = name.find('-');
+    v.backend = name.substr(0, dash);
+    if (dash == std::string::npos) return v;
+    const std::string suffix = name.substr(dash + 1);
+    if (suffix == "matched" && v.backend != "dem") v.contact = "matched";
+    else if (suffix == "deformable" && v.backend == "dem") v.model = "deformable";
+    else if (suffix == "rigid") v.model = v.backend == "dem" ? "rigid" : "";
+    else
+        throw Error("expected a backend name or a variant: dem-rigid, dem-deformable, or <engine>-rigid, "
+                    "<engine>-matched");
+    return v;
+}
+
 SweepPlan read_sweep_plan(const std::string& path,
                           const std::function<std::string(const std::string&)>& resolve_scene) {
     std::ifstream in(path, std::ios::binary);
@@ -169,6 +184,11 @@ SweepPlan read_sweep_plan(const std::string& path,
         for (const auto& n : plan.backends) {
             check_name(b, n);
             b.check(seen.insert(n).second, "backend " + n + " is named twice");
+            try {
+                backend_variant(n);
+            } catch (const Error& e) {
+                b.fail(n + ": " + e.what());
+            }
         }
     }
     if (Item b = r.get("block")) plan.block = b.string();

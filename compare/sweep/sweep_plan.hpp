@@ -34,7 +34,7 @@ struct SweepPlan {
     std::string kind = "grid";         ///< "grid" or "fragility" (adds the fragility curves)
     std::vector<std::string> scenes;   ///< resolved scene files
     std::vector<std::string> scene_names;   ///< as written in the plan (shown in the table)
-    std::vector<std::string> backends; ///< registry names
+    std::vector<std::string> backends; ///< registry names, or variants "bullet-matched", "dem-deformable"
     std::string block;                 ///< the block whose outcome is recorded; "" = the first free one
     double overturn_angle = 0.0;       ///< rad; 0 = atan(base/height) of the block
     int repeats = 1;                   ///< runs per point (the wall time varies, the result does not)
@@ -43,6 +43,17 @@ struct SweepPlan {
     std::vector<double> intensities;   ///< peak ground acceleration of the scaled record, g; empty = as recorded
     std::vector<Axis> axes;            ///< further overrides, crossed with everything else
 };
+
+/// A backend entry of a plan split into what a run needs.
+struct BackendVariant {
+    std::string backend;            ///< registry name
+    std::string contact = "rigid";  ///< contact mode of the reference engines: "rigid" or "matched"
+    std::string model;              ///< "deformable" for every free block, "" = the scene's models
+};
+
+/// "bullet" → {bullet, rigid, ""}, "ode-matched" → {ode, matched, ""}, "dem-deformable" →
+/// {dem, rigid, deformable}, "dem-rigid" → {dem, rigid, rigid}; throws cairn::Error for another suffix
+BackendVariant backend_variant(const std::string& name);
 
 /// limits on a plan (bad input must not make cairn allocate or loop without bound)
 constexpr std::size_t kMaxPlanBytes = 1u << 20;

@@ -15,7 +15,7 @@ struct SweepRun {
     std::string id;               ///< 16 hex digits hashed from what the run is (not from where it is)
     std::string scene;            ///< scene file, absolute
     std::string scene_name;       ///< as written in the plan
-    std::string backend;          ///< registry name
+    std::string backend;          ///< as in the plan: a registry name or a variant ("bullet-matched", backend_variant)
     std::string record;           ///< record name, or "scene" for the scene's own ground motion
     double intensity = 0.0;       ///< peak ground acceleration of the scaled record, g
     double scale = 1.0;           ///< ground_motion.scale that gives it

@@ -116,6 +116,13 @@ TEST_CASE("cairn sweep refuses a bad plan with exit 2 and writes nothing", "[app
     CHECK(r.exit_code == 2);
     CHECK_THAT(r.err, Contains("fricton"));
     CHECK_FALSE(fs::exists(d / "out"));
+    // an unknown backend: refused before any run
+    std::ofstream(d / "nosuch.toml") << "scene = \"earthquake/column_elcentro\"\nbackends = [\"nosuch\"]\n"
+                                        "[records.p]\npulse = \"sine\"\nfrequency = 2.0\n";
+    const auto b = run_cairn("sweep '" + (d / "nosuch.toml").string() + "' --out '" + (d / "out").string() + "'", d);
+    CHECK(b.exit_code == 2);
+    CHECK_THAT(b.err, Contains("nosuch"));
+    CHECK_FALSE(fs::exists(d / "out"));
     const auto s = run_cairn("sweep '" + (d / "bad.toml").string() + "' --shard 3/2", d);
     CHECK(s.exit_code == 2);
     CHECK_THAT(s.err, Contains("--shard 3/2"));

@@ -59,6 +59,8 @@ TEST_CASE("sweep plans with bad keys or values are refused naming the file, key 
     const std::string base = "backends = [\"bullet\"]\n";
     CHECK_THAT(error_of(write_plan(d, base + "colour = 3\n")), Contains("plan.toml") && Contains("colour"));
     CHECK_THAT(error_of(write_plan(d, "backends = [\"bul let\"]\n")), Contains("backends") && Contains("bul let"));
+    CHECK_THAT(error_of(write_plan(d, "backends = [\"ode-deformable\"]\n")),
+               Contains("backends") && Contains("ode-deformable") && Contains("variant"));
     CHECK_THAT(error_of(write_plan(d, base + "intensities = [0.1, -0.2]\n")),
                Contains("intensities[1]") && Contains("-0.2"));
     CHECK_THAT(error_of(write_plan(d, base + "repeats = 1000\n")), Contains("repeats") && Contains("1000"));
@@ -123,6 +125,17 @@ TEST_CASE("a bad scene key in a plan fails at expansion, before any run", "[swee
     const auto d = scratch("badkey");
     const auto plan = read_sweep_plan(write_plan(d, "backends = [\"bullet\"]\n[set]\n\"contact.fricton\" = 0.5\n"), resolve);
     CHECK_THROWS_WITH(expand_sweep(plan, (d / "records").string()), Contains("fricton"));
+}
+
+TEST_CASE("backend variants split into backend, contact mode and block model", "[sweep][plan]") {
+    CHECK(backend_variant("bullet").backend == "bullet");
+    CHECK(backend_variant("bullet").contact == "rigid");
+    CHECK(backend_variant("mujoco-matched").contact == "matched");
+    CHECK(backend_variant("mujoco-matched").backend == "mujoco");
+    CHECK(backend_variant("dem-deformable").model == "deformable");
+    CHECK(backend_variant("dem-rigid").model == "rigid");
+    CHECK(backend_variant("ode-rigid").model.empty());
+    CHECK_THROWS_AS(backend_variant("dem-matched"), Error);
 }
 
 TEST_CASE("synthetic pulses have unit peak and come back to rest", "[sweep][plan]") {
