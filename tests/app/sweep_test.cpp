@@ -4,7 +4,12 @@
 #include <fstream>
 #include <sstream>
 
+#include <chrono>
+#include <csignal>
+#include <thread>
+
 #include "cairn_process.hpp"
+#include "cairn_spawn.hpp"
 #include "report/text.hpp"
 
 namespace fs = std::filesystem;
@@ -129,4 +134,31 @@ TEST_CASE("cairn sweep refuses a bad plan with exit 2 and writes nothing", "[app
     const auto n = run_cairn("sweep merge '" + d.string() + "'", d);
     CHECK(n.exit_code == 2);
     CHECK_THAT(n.err, Contains("not a sweep directory"));
+}
+
+TEST_CASE("SIGINT stops cairn sweep keeping finished results, exit 130; --resume completes it", "[app][kill][sweep]") {
+    const auto d = fresh_dir("sweep_interrupt");
+    const std::string plan = small_plan(d);
+    const fs::path out = d / "out";
+    const pid_t pid = spawn_cairn({"sweep", plan, "--out", out.string(), "--jobs", "1", "-q"}, d);
+    auto results = [&] {
+        size_t n = 0;
+        if (fs::exists(out / "results"))
+            for (const auto& e : fs::directory_iterator(out / "results")) n += e.path().extension() == ".json";
+        return n;
+    };
+    for (int i = 0; i < 6000 && results() == 0; ++i) std::this_thread::sleep_for(std::chrono::milliseconds(10));
+    ::kill(pid, SIGINT);
+    const Ended e = wait_for(pid);
+    CHECK(e.exit_code == 130);
+    CHECK_THAT(read_file(d / "stderr.txt"), Contains("--resume runs the rest"));
+    const size_t kept = results();
+    CHECK(kept >= 1);
+    CHECK(kept < 12);
+    CHECK_FALSE(fs::exists(out / "runs.csv"));
+    const auto r = run_cairn("sweep '" + plan + "' --out '" + out.string() + "' --resume", d);
+    INFO(r.err);
+    CHECK(r.exit_code == 0);
+    CHECK_THAT(r.err, Contains(std::to_string(kept) + " runs already done"));
+    CHECK(rows_of(out / "runs.csv").size() == 13);
 }
