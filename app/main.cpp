@@ -135,7 +135,9 @@ int main(int argc, char** argv) {
         ->check(CLI::IsMember({"local", "slurm"}));
     sweep_cmd->add_option("--tasks", sweep.tasks, "slurm: array tasks (default min(runs, 16))")->check(CLI::Range(1, 10000));
     sweep_cmd->add_option("--task-jobs", sweep.task_jobs, "slurm: runs at a time in each task (default 1)")->check(CLI::Range(1, 64));
-    sweep_cmd->add_option("--sbatch-arg", sweep.sbatch_args, "slurm: an extra sbatch option, e.g. --sbatch-arg=--partition=short (repeatable)");
+    sweep_cmd->add_option("--sbatch-arg", sweep.sbatch_args, "slurm: an extra sbatch option, e.g. --sbatch-arg=--partition=short (repeatable)")
+        ->take_all()
+        ->allow_extra_args(false);
     sweep_cmd->add_flag("--quiet,-q", sweep.quiet, "no progress lines");
     auto* sweep_merge = sweep_cmd->add_subcommand("merge", "merge the results in DIR into runs.csv (and the fragility report)");
     sweep_merge->add_option("dir", sweep.merge_dir, "the sweep's output directory")->required();
