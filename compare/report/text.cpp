@@ -1,7 +1,5 @@
 #include "report/text.hpp"
 
-#include "error.hpp"
-
 #include <cmath>
 #include <cstdio>
 
@@ -31,18 +29,6 @@ std::string csv_field(const std::string& s) {
     std::string q = "\"";
     for (char c : s) q += c == '"' ? std::string("\"\"") : std::string(1, c == '\n' ? ' ' : c);
     return q + "\"";
-}
-
-bool read_bounded_line(std::istream& in, std::string& line, const std::string& path, std::size_t max_chars) {
-    line.clear();
-    char c;
-    while (in.get(c)) {
-        if (c == '\n') return true;
-        if (line.size() >= max_chars)
-            throw Error(path + ": a line longer than " + std::to_string(max_chars) + " characters");
-        line += c;
-    }
-    return !line.empty();
 }
 
 std::vector<std::string> split_csv_line(const std::string& line) {

@@ -1,8 +1,6 @@
 #pragma once
 /// Numbers as text and CSV fields, shared by every writer and reader of the compare layer.
 
-#include <cstddef>
-#include <istream>
 #include <string>
 #include <vector>
 
@@ -18,10 +16,6 @@ std::string fixed_text(double v, int decimals);
 std::string csv_field(const std::string& s);
 /// text safe inside HTML element content and quoted attribute values (& < > " ' escaped)
 std::string html_text(const std::string& s);
-/// read one line of at most `max_chars` characters from `in` into `line` (without the newline);
-/// false at the end of the input; throws cairn::Error naming `path` for a longer line
-bool read_bounded_line(std::istream& in, std::string& line, const std::string& path, std::size_t max_chars);
-
 /// the fields of one CSV line; a quoted field may hold commas and "" for a quote
 std::vector<std::string> split_csv_line(const std::string& line);
 

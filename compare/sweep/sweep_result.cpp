@@ -9,54 +9,23 @@
 
 #include "error.hpp"
 #include "geometry/types.hpp"
-#include "report/text.hpp"
+#include "report/trajectory_reader.hpp"
 
 namespace fs = std::filesystem;
 
 namespace cairn::sweep {
 
-namespace {
-
-/// longest trajectory line read, characters
-constexpr std::size_t kMaxLine = 1u << 20;
-
-bool read_line(std::istream& in, std::string& line, const std::string& path) {
-    return report::read_bounded_line(in, line, path, kMaxLine);
-}
-
-}  // namespace
-
 void read_trajectory_outcome(const std::string& run_dir, const SweepRun& run, SweepResult& r) {
-    fs::path csv = fs::path(run_dir) / "trajectory.csv";
-    if (!fs::exists(csv)) csv = fs::path(run_dir) / "trajectory.partial.csv";
-    std::ifstream in(csv);
-    if (!in) throw Error(csv.string() + ": cannot read");
-    std::string line;
-    if (!read_line(in, line, csv.string())) throw Error(csv.string() + ": empty");
-    const auto header = report::split_csv_line(line);
-    auto column = [&](const std::string& name) {
-        for (size_t i = 0; i < header.size(); ++i)
-            if (header[i].substr(0, header[i].find(' ')) == name) return i;
-        throw Error(csv.string() + ": no column " + name);
-    };
-    const size_t t_col = column("t");
-    std::vector<size_t> cols;
-    for (const char* k : {".x", ".y", ".qw", ".qx", ".qy", ".qz"}) cols.push_back(column(run.block + k));
+    report::TrajectoryReader csv(run_dir);
+    const std::size_t t_col = csv.column("t");
+    std::vector<std::size_t> cols;
+    for (const char* k : {".x", ".y", ".qw", ".qx", ".qy", ".qz"}) cols.push_back(csv.column(run.block + k));
     double x0 = 0, y0 = 0;
     bool first = true;
     r.peak_rotation = 0.0;
-    for (int row = 2; read_line(in, line, csv.string()); ++row) {
-        const auto f = report::split_csv_line(line);
-        auto num = [&](size_t c) {
-            if (c >= f.size()) throw Error(csv.string() + ": line " + std::to_string(row) + " has too few fields");
-            char* end = nullptr;
-            const double v = std::strtod(f[c].c_str(), &end);
-            if (f[c].empty() || *end != '\0')
-                throw Error(csv.string() + ": line " + std::to_string(row) + ": '" + f[c] + "' is not a number");
-            return v;
-        };
-        const double x = num(cols[0]), y = num(cols[1]);
-        const Quat q(num(cols[2]), num(cols[3]), num(cols[4]), num(cols[5]));
+    while (csv.next()) {
+        const double x = csv.number(cols[0]), y = csv.number(cols[1]);
+        const Quat q(csv.number(cols[2]), csv.number(cols[3]), csv.number(cols[4]), csv.number(cols[5]));
         // tilt: the angle between the block's z axis and the vertical
         const Vec3 axis = q.normalized() * Vec3::UnitZ();
         const double tilt = std::acos(std::clamp(axis.z(), -1.0, 1.0));
@@ -68,9 +37,9 @@ void read_trajectory_outcome(const std::string& run_dir, const SweepRun& run, Sw
         r.peak_rotation = std::max(r.peak_rotation, tilt);
         r.final_rotation = tilt;
         r.residual_displacement = std::hypot(x - x0, y - y0);
-        r.duration = num(t_col);
+        r.duration = csv.number(t_col);
     }
-    if (first) throw Error(csv.string() + ": no samples");
+    if (first) throw Error(csv.path() + ": no samples");
     r.overturned = r.final_rotation > run.overturn_angle;
 }
 
