@@ -4,7 +4,7 @@
 # small sweep as a job array with its merge job, waits, and checks that the merged table equals the
 # one of the same sweep run locally. Stops the daemons it started.
 #
-#   bash scripts/slurm_local.sh [--no-install] CAIRN_EXE WORK_DIR [PLAN]
+#   bash scripts/slurm_local.sh [--no-install] CAIRN_EXE WORK_DIR [PLAN]   (WORK_DIR is emptied first)
 #
 # Needs root (the daemons). Without Slurm it installs Debian's slurmctld, slurmd, munge and
 # slurm-client, unless --no-install: then it says so and exits 77 (ctest's "skipped").
