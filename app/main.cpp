@@ -9,6 +9,7 @@
 #include "run/stop.hpp"
 #include "limit_options.hpp"
 #include "suggest.hpp"
+#include "sweep_command.hpp"
 #include "validation/plan.hpp"
 
 int main(int argc, char** argv) {
@@ -122,6 +123,25 @@ int main(int argc, char** argv) {
         }
     }
 
+    SweepOptions sweep;
+    auto* sweep_cmd = app.add_subcommand("sweep", "a plan of independent runs, locally or on Slurm, merged into one table (docs/sweeps.md)");
+    sweep_cmd->add_option("plan", sweep.plan, "the sweep plan (TOML)");
+    sweep_cmd->add_option("--out,-o", sweep.out_dir, "output directory (default out/sweeps/<plan name>)");
+    sweep_cmd->add_option("--jobs,-j", sweep.jobs, "runs at a time (default 2)")->check(CLI::Range(1, 64));
+    sweep_cmd->add_option("--shard", sweep.shard, "run only shard I of N (I/N, 0-based; merge later)");
+    sweep_cmd->add_flag("--resume", sweep.resume, "skip the runs that have a result");
+    sweep_cmd->add_flag("--force", sweep.force, "start over in a directory holding a sweep");
+    sweep_cmd->add_option("--scheduler", sweep.scheduler, "local (default) or slurm (a job array and a merge job)")
+        ->check(CLI::IsMember({"local", "slurm"}));
+    sweep_cmd->add_option("--tasks", sweep.tasks, "slurm: array tasks (default min(runs, 16))")->check(CLI::Range(1, 10000));
+    sweep_cmd->add_option("--task-jobs", sweep.task_jobs, "slurm: runs at a time in each task (default 1)")->check(CLI::Range(1, 64));
+    sweep_cmd->add_option("--sbatch-arg", sweep.sbatch_args, "slurm: an extra sbatch option, e.g. --sbatch-arg=--partition=short (repeatable)")
+        ->take_all()
+        ->allow_extra_args(false);
+    sweep_cmd->add_flag("--quiet,-q", sweep.quiet, "no progress lines");
+    auto* sweep_merge = sweep_cmd->add_subcommand("merge", "merge the results in DIR into runs.csv (and the fragility report)");
+    sweep_merge->add_option("dir", sweep.merge_dir, "the sweep's output directory")->required();
+
     // bare `cairn`: the usage and the commands, exit 2 (a command is required)
     if (argc < 2) {
         std::cout << app.help();
@@ -157,6 +177,14 @@ int main(int argc, char** argv) {
         if (study_inertia->parsed()) return study_inertia_command(inertia);
         if (app.got_subcommand(validate)) return validate_command(val);
         if (app.got_subcommand(compare)) return compare_command(cmp);
+        if (sweep_merge->parsed()) return sweep_merge_command(sweep);
+        if (app.got_subcommand(sweep_cmd)) {
+            if (sweep.plan.empty()) {
+                std::cerr << "error: cairn sweep: a plan file is required (or: cairn sweep merge DIR)\n";
+                return kExitBadInput;
+            }
+            return sweep_command(sweep);
+        }
         for (auto* sub : bench_cmd->get_subcommands())
             if (sub->parsed()) return bench_command(sub->get_name(), bench);
     } catch (const std::exception& e) {

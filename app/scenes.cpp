@@ -24,6 +24,7 @@ std::vector<SceneEntry> shipped_scenes() {
     for (const auto& f : fs::recursive_directory_iterator(root, ec)) {
         if (!f.is_regular_file() || f.path().extension() != ".toml") continue;
         fs::path rel = fs::relative(f.path(), root);
+        if (*rel.begin() == "sweeps") continue;   // sweep plans (cairn sweep), not scenes
         rel.replace_extension();
         list.push_back({rel.generic_string(), f.path().string()});
     }

@@ -7,34 +7,12 @@
 #include <nlohmann/json.hpp>
 
 #include "error.hpp"
-#include "report/text.hpp"
+#include "report/trajectory_reader.hpp"
 #include "scene/scene_io.hpp"
 
 namespace fs = std::filesystem;
 
 namespace cairn {
-
-namespace {
-
-/// longest trajectory line accepted, characters (a row of 17-digit numbers for thousands of blocks)
-constexpr size_t kMaxLine = 16u << 20;
-
-/// read one line of at most kMaxLine characters; false at the end of the file
-bool read_line(std::istream& in, std::string& line, const std::string& path) {
-    line.clear();
-    char c;
-    while (in.get(c)) {
-        if (c == '\n') return true;
-        if (line.size() >= kMaxLine) throw Error(path + ": a line longer than " + std::to_string(kMaxLine) + " characters");
-        line += c;
-    }
-    return !line.empty();
-}
-
-/// a column name without its unit ("t [s]" -> "t")
-std::string column_name(const std::string& s) { return s.substr(0, s.find(' ')); }
-
-}  // namespace
 
 ReplayRun replay_from_run_dir(const std::string& dir) {
     const std::string record_path = (fs::path(dir) / "run.json").string();
@@ -62,39 +40,21 @@ ReplayRun replay_from_run_dir(const std::string& dir) {
     const Scene scene = load_scene(scene_path, overrides);
     ReplayRun run = replay_run(label, scene);
 
-    fs::path csv = fs::path(dir) / "trajectory.csv";
-    if (!fs::exists(csv)) csv = fs::path(dir) / "trajectory.partial.csv";
-    std::ifstream in(csv);
-    if (!in) throw Error(csv.string() + ": cannot read");
-    std::string line;
-    if (!read_line(in, line, csv.string())) throw Error(csv.string() + ": empty");
-    const auto header = report::split_csv_line(line);
-    auto column = [&](const std::string& name) {
-        for (size_t i = 0; i < header.size(); ++i)
-            if (column_name(header[i]) == name) return int(i);
-        throw Error(csv.string() + ": no column " + name + " (the scene " + scene_path + " changed since the run?)");
-    };
-    const int t_col = column("t");
-    std::vector<int> cols;   // x, y, z, qw, qx, qy, qz of every free block, scene order
+    report::TrajectoryReader csv(dir);
+    const std::string hint = " (the scene " + scene_path + " changed since the run?)";
+    const std::size_t t_col = csv.column("t", hint);
+    std::vector<std::size_t> cols;   // x, y, z, qw, qx, qy, qz of every free block, scene order
     for (const auto& b : scene.blocks)
         if (!b.fixed)
-            for (const char* k : {".x", ".y", ".z", ".qw", ".qx", ".qy", ".qz"}) cols.push_back(column(b.name + k));
-    for (int row = 2; read_line(in, line, csv.string()); ++row) {
-        const auto f = report::split_csv_line(line);
+            for (const char* k : {".x", ".y", ".z", ".qw", ".qx", ".qy", ".qz"}) cols.push_back(csv.column(b.name + k, hint));
+    while (csv.next()) {
         Sample s;
-        auto num = [&](int c) {
-            if (c >= int(f.size())) throw Error(csv.string() + ": line " + std::to_string(row) + " has too few fields");
-            char* end = nullptr;
-            const double v = std::strtod(f[c].c_str(), &end);
-            if (f[c].empty() || *end != '\0')
-                throw Error(csv.string() + ": line " + std::to_string(row) + ": '" + f[c] + "' is not a number");
-            return v;
-        };
-        s.t = num(t_col);
+        s.t = csv.number(t_col);
         for (size_t k = 0; k < cols.size(); k += 7) {
             BlockState b;
-            b.position = Vec3(num(cols[k]), num(cols[k + 1]), num(cols[k + 2]));
-            b.orientation = Quat(num(cols[k + 3]), num(cols[k + 4]), num(cols[k + 5]), num(cols[k + 6]));
+            b.position = Vec3(csv.number(cols[k]), csv.number(cols[k + 1]), csv.number(cols[k + 2]));
+            b.orientation = Quat(csv.number(cols[k + 3]), csv.number(cols[k + 4]), csv.number(cols[k + 5]),
+                                 csv.number(cols[k + 6]));
             s.blocks.push_back(b);
         }
         add_frame(run, s);
