@@ -1,5 +1,10 @@
-// `cairn study inertia`: the mesh-inertia study (docs/inertia.md)
+// `cairn study inertia`: the mesh-inertia study (docs/inertia.md); `cairn study overturning` (docs/studies.md)
 #include <chrono>
+#include <cmath>
+#include <fstream>
+#include <sstream>
+
+#include <CLI/CLI.hpp>
 #include <filesystem>
 #include <iostream>
 #include <memory>
@@ -13,6 +18,10 @@
 #include "run/stop.hpp"
 #include "scenes.hpp"
 #include "study/inertia_study.hpp"
+#include "study/overturning_study.hpp"
+#include "pool_backends.hpp"
+#include "scene/scene_io.hpp"
+#include "suggest.hpp"
 #include "study/study_report.hpp"
 
 namespace cairn {
@@ -60,6 +69,117 @@ int study_inertia_command(const StudyInertiaOptions& o) {
               << "/inertia.csv, inertia.md, inertia.html\n";
     for (const auto& p : points)
         if (p.status != "completed") return kExitFailure;
+    return kExitOk;
+}
+
+CLI::App* add_study_overturning(CLI::App& study, StudyOverturningOptions& o) {
+    auto* c = study.add_subcommand("overturning", "overturning spectra under pulses: every backend against the rocking oracle");
+    c->add_option("scene", o.scene, "scene with one upright free box on a fixed base (or give --block)");
+    c->add_option("--block", o.block, "W,H[,D]: a block W wide (x), H high, D deep (default D = W) on a slab, m")
+        ->delimiter(',')->expected(2, 3);
+    c->add_option("--pulse", o.pulse, "sine, cosine or ricker (default sine)");
+    c->add_option("--backends", o.backends, "all, or comma-separated backend names (default all)")->delimiter(',');
+    c->add_option("--grid", o.grid, "NxM: N amplitudes a_p/(g tan a) x M frequencies w_p/p (default 8x9)");
+    c->add_option("--bisect", o.bisect, "bisection steps of each minimum overturning amplitude (default 10)")
+        ->check(CLI::Range(0, 40));
+    c->add_option("--jobs,-j", o.jobs, "runs at a time (default 2)")->check(CLI::Range(1, 64));
+    c->add_option("--set", o.overrides, "override a key of every backend scene: --set key=value (repeatable)");
+    c->add_option("--out,-o", o.out_dir, "output directory (default out/overturning)");
+    c->add_flag("--quiet,-q", o.quiet, "no progress lines");
+    return c;
+}
+
+namespace {
+
+/// N amplitudes from 1.5 to 12 g tan a (the default 8 listed) and M frequencies from 1 to 9 p
+void parse_grid(const std::string& text, study::OverturningSetup& s) {
+    int n = 0, m = 0;
+    char x = 0, extra = 0;
+    std::istringstream in(text);
+    if (!(in >> n >> x >> m) || x != 'x' || (in >> extra) || n < 2 || m < 1 || n > 100 || m > 100)
+        throw Error("--grid " + text + ": expected NxM with N in [2, 100] amplitudes and M in [1, 100] frequencies");
+    s.levels = n == 8 ? study::default_levels() : std::vector<double>{};
+    for (int i = 0; n != 8 && i < n; ++i) s.levels.push_back(1.5 * std::pow(8.0, double(i) / (n - 1)));
+    s.ratios = m == 9 ? study::default_ratios() : std::vector<double>{};
+    for (int i = 0; m != 9 && i < m; ++i) s.ratios.push_back(m == 1 ? 5.0 : 1.0 + 8.0 * i / (m - 1));
+}
+
+/// the setup of the options: the block (from --block or the scene's free box), grid and backends
+study::OverturningSetup overturning_setup(const StudyOverturningOptions& o) {
+    study::OverturningSetup s;
+    if (o.scene.empty() == o.block.empty())
+        throw Error("study overturning: give a scene or --block W,H[,D], not both");
+    if (!o.block.empty()) {
+        const double w = o.block[0], h = o.block[1], d = o.block.size() > 2 ? o.block[2] : o.block[0];
+        s.scene_text = study::block_scene_text(w, d, h);
+        s.scene_source = "--block";
+    } else {
+        const std::string path = resolve_scene(o.scene);
+        std::ifstream in(path);
+        std::ostringstream text;
+        text << in.rdbuf();
+        if (!in) throw Error(path + ": cannot read the scene");
+        s.scene_text = text.str();
+        s.scene_source = path;
+    }
+    for (const auto& ov : o.overrides) s.overrides.push_back(parse_override(ov));
+    const Scene scene = parse_scene(s.scene_text, s.scene_source, s.overrides);
+    if (scene.ground_motion)
+        throw Error(s.scene_source + ": [ground_motion]: the study applies its own pulses; remove the scene's record");
+    int free = -1;
+    for (size_t i = 0; i < scene.blocks.size(); ++i)
+        if (!scene.blocks[i].fixed) free = free < 0 ? int(i) : -2;
+    if (free < 0) throw Error(s.scene_source + ": the study needs exactly one free block");
+    const BlockDef& b = scene.blocks[size_t(free)];
+    if (b.orientation.angularDistance(Quat::Identity()) > 1e-12)
+        throw Error(s.scene_source + ": blocks." + b.name + ".orientation: the block must stand upright");
+    double x0 = 1e300, x1 = -1e300, z0 = 1e300, z1 = -1e300;
+    for (const auto& c : b.corners) {
+        x0 = std::min(x0, c.x()), x1 = std::max(x1, c.x()), z0 = std::min(z0, c.z()), z1 = std::max(z1, c.z());
+    }
+    s.b = 0.5 * (x1 - x0);
+    s.h = 0.5 * (z1 - z0);
+    s.g = -scene.gravity.z();
+    if (!(s.g > 0.0)) throw Error(s.scene_source + ": gravity: the study needs gravity along -z");
+    s.pulse = oracle::parse_pulse_shape(o.pulse);
+    parse_grid(o.grid, s);
+    std::vector<std::string> names;
+    for (const auto& a : available_backends()) names.push_back(a.name);
+    s.backends = o.backends.empty() || (o.backends.size() == 1 && o.backends[0] == "all") ? names : o.backends;
+    for (const auto& n : s.backends)
+        if (std::find(names.begin(), names.end(), n) == names.end())
+            throw Error("--backends " + n + ": no such backend" + did_you_mean(n, names));
+    s.bisect = o.bisect;
+    s.jobs = o.jobs;
+    s.quiet = o.quiet;
+    return s;
+}
+
+}  // namespace
+
+int study_overturning_command(const StudyOverturningOptions& o) {
+    std::unique_ptr<StagedDir> staged;
+    study::OverturningSetup setup;
+    try {
+        setup = overturning_setup(o);
+        staged = std::make_unique<StagedDir>(o.out_dir, true);
+    } catch (const Error& e) {
+        std::cerr << "error: " << e.what() << "\n";
+        return kExitBadInput;
+    }
+    const auto factory = pool_backend_factory(setup.jobs);
+    study::OverturningResult result;
+    try {
+        result = study::run_overturning(setup, factory);
+    } catch (const Error& e) {
+        if (stop_requested()) return interrupted_keeping("study", o.out_dir);
+        std::cerr << "error: " << e.what() << "\n";
+        return kExitBadInput;
+    }
+    study::write_overturning_study(staged->path().string(), setup, result);
+    staged->commit();
+    std::cout << "overturning study: " << result.grid.size() + result.bisection.size() << " runs in "
+              << result.wall_seconds << " s; wrote " << o.out_dir << "/overturning.md, overturning.html\n";
     return kExitOk;
 }
 

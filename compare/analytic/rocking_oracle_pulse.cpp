@@ -50,17 +50,13 @@ BaseMotion Pulse::motion() const {
 
 TimeSeries Pulse::sampled(double dt) const {
     if (!(dt > 0.0)) throw Error("pulse sampling step must be positive");
-    const long n = long(std::ceil(duration() / dt));
+    const long n = std::max(1L, long(std::ceil(duration() / dt - 1e-9)));
     if (n > 10000000L) throw Error("pulse sampling: more than 1e7 samples");
     TimeSeries ts;
-    for (long i = 0; i <= n; ++i) {
-        const double t = std::min(duration(), double(i) * dt);
+    for (long i = 0; i <= n; ++i) {   // n equal intervals, at most dt, ending exactly at the pulse's end
+        const double t = duration() * double(i) / double(n);
         ts.time.push_back(t);
         ts.value.push_back(at(t));
-    }
-    if (ts.time.size() > 1 && ts.time.back() <= ts.time[ts.time.size() - 2]) {   // last step cut short to zero
-        ts.time.pop_back();
-        ts.value.pop_back();
     }
     return ts;
 }
