@@ -63,6 +63,23 @@ struct StudyOverturningOptions {
 
 /// `cairn study overturning`: overturning spectra of every backend against the rocking oracle
 int study_overturning_command(const StudyOverturningOptions& options);
+/// Options of `cairn study record` (docs/cli.md).
+struct StudyRecordOptions {
+    std::string scene;                    ///< a scene with one free block and a [ground_motion], or empty
+    std::vector<double> block;            ///< --block W,H[,D], m
+    std::string record;                   ///< --record CSV (t_s, accel_g) for --block; default El Centro
+    double duration = 10.0;               ///< s, with --block
+    std::vector<std::string> backends;    ///< empty or "all" = every available backend
+    int jobs = 2;
+    std::vector<std::string> overrides;   ///< --set key=value
+    std::string out_dir = "out/record";
+    bool quiet = false;
+};
+
+/// `cairn study record`: each backend's rocking under a record against the rocking oracle
+int study_record_command(const StudyRecordOptions& options);
+/// declare `study record` and its options under `study`
+CLI::App* add_study_record(CLI::App& study, StudyRecordOptions& options);
 /// declare `study overturning` and its options under `study`
 CLI::App* add_study_overturning(CLI::App& study, StudyOverturningOptions& options);
 

@@ -65,6 +65,8 @@ int main(int argc, char** argv) {
     study_inertia->add_flag("--quiet,-q", inertia.quiet, "no progress lines");
     StudyOverturningOptions overturning;
     auto* study_overturning = add_study_overturning(*study, overturning);
+    StudyRecordOptions record;
+    auto* study_record = add_study_record(*study, record);
 
     CompareOptions cmp;
     auto* compare = app.add_subcommand("compare", "run one scene on every backend variant and compare them in a report");
@@ -158,6 +160,7 @@ int main(int argc, char** argv) {
         if (app.got_subcommand(run_all)) return run_all_command(all);
         if (study_inertia->parsed()) return study_inertia_command(inertia);
         if (study_overturning->parsed()) return study_overturning_command(overturning);
+        if (study_record->parsed()) return study_record_command(record);
         if (app.got_subcommand(validate)) return validate_command(val);
         if (app.got_subcommand(compare)) return compare_command(cmp);
         for (auto* sub : bench_cmd->get_subcommands())

@@ -19,6 +19,7 @@
 #include "scenes.hpp"
 #include "study/inertia_study.hpp"
 #include "study/overturning_study.hpp"
+#include "study/record_study.hpp"
 #include "pool_backends.hpp"
 #include "scene/scene_io.hpp"
 #include "suggest.hpp"
@@ -91,6 +92,37 @@ CLI::App* add_study_overturning(CLI::App& study, StudyOverturningOptions& o) {
 
 namespace {
 
+/// the backends of --backends (empty or "all" = every available one), each checked
+std::vector<std::string> chosen(const std::vector<std::string>& given) {
+    std::vector<std::string> names;
+    for (const auto& a : available_backends()) names.push_back(a.name);
+    if (given.empty() || (given.size() == 1 && given[0] == "all")) return names;
+    for (const auto& n : given)
+        if (std::find(names.begin(), names.end(), n) == names.end())
+            throw Error("--backends " + n + ": no such backend" + did_you_mean(n, names));
+    return given;
+}
+
+/// the scene file's text
+std::string read_text(const std::string& path) {
+    std::ifstream in(path);
+    std::ostringstream text;
+    text << in.rdbuf();
+    if (!in) throw Error(path + ": cannot read the scene");
+    return text.str();
+}
+
+/// `s` as a TOML basic string
+std::string toml_string(const std::string& s) {
+    std::string out = "\"";
+    for (char c : s) {
+        if (static_cast<unsigned char>(c) < 0x20) throw Error("--record: the path has a control character");
+        if (c == '"' || c == '\\') out += '\\';
+        out += c;
+    }
+    return out + "\"";
+}
+
 /// N amplitudes from 1.5 to 12 g tan a (the default 8 listed) and M frequencies from 1 to 9 p
 void parse_grid(const std::string& text, study::OverturningSetup& s) {
     int n = 0, m = 0;
@@ -114,41 +146,20 @@ study::OverturningSetup overturning_setup(const StudyOverturningOptions& o) {
         s.scene_text = study::block_scene_text(w, d, h);
         s.scene_source = "--block";
     } else {
-        const std::string path = resolve_scene(o.scene);
-        std::ifstream in(path);
-        std::ostringstream text;
-        text << in.rdbuf();
-        if (!in) throw Error(path + ": cannot read the scene");
-        s.scene_text = text.str();
-        s.scene_source = path;
+        s.scene_source = resolve_scene(o.scene);
+        s.scene_text = read_text(s.scene_source);
     }
     for (const auto& ov : o.overrides) s.overrides.push_back(parse_override(ov));
     const Scene scene = parse_scene(s.scene_text, s.scene_source, s.overrides);
     if (scene.ground_motion)
         throw Error(s.scene_source + ": [ground_motion]: the study applies its own pulses; remove the scene's record");
-    int free = -1;
-    for (size_t i = 0; i < scene.blocks.size(); ++i)
-        if (!scene.blocks[i].fixed) free = free < 0 ? int(i) : -2;
-    if (free < 0) throw Error(s.scene_source + ": the study needs exactly one free block");
-    const BlockDef& b = scene.blocks[size_t(free)];
-    if (b.orientation.angularDistance(Quat::Identity()) > 1e-12)
-        throw Error(s.scene_source + ": blocks." + b.name + ".orientation: the block must stand upright");
-    double x0 = 1e300, x1 = -1e300, z0 = 1e300, z1 = -1e300;
-    for (const auto& c : b.corners) {
-        x0 = std::min(x0, c.x()), x1 = std::max(x1, c.x()), z0 = std::min(z0, c.z()), z1 = std::max(z1, c.z());
-    }
-    s.b = 0.5 * (x1 - x0);
-    s.h = 0.5 * (z1 - z0);
-    s.g = -scene.gravity.z();
-    if (!(s.g > 0.0)) throw Error(s.scene_source + ": gravity: the study needs gravity along -z");
+    const auto rb = study::rocking_block_of(scene);
+    s.b = rb.b;
+    s.h = rb.h;
+    s.g = rb.g;
     s.pulse = oracle::parse_pulse_shape(o.pulse);
     parse_grid(o.grid, s);
-    std::vector<std::string> names;
-    for (const auto& a : available_backends()) names.push_back(a.name);
-    s.backends = o.backends.empty() || (o.backends.size() == 1 && o.backends[0] == "all") ? names : o.backends;
-    for (const auto& n : s.backends)
-        if (std::find(names.begin(), names.end(), n) == names.end())
-            throw Error("--backends " + n + ": no such backend" + did_you_mean(n, names));
+    s.backends = chosen(o.backends);
     s.bisect = o.bisect;
     s.jobs = o.jobs;
     s.quiet = o.quiet;
@@ -180,6 +191,65 @@ int study_overturning_command(const StudyOverturningOptions& o) {
     staged->commit();
     std::cout << "overturning study: " << result.grid.size() + result.bisection.size() << " runs in "
               << result.wall_seconds << " s; wrote " << o.out_dir << "/overturning.md, overturning.html\n";
+    return kExitOk;
+}
+
+CLI::App* add_study_record(CLI::App& study, StudyRecordOptions& o) {
+    auto* c = study.add_subcommand("record", "rocking under a record: every backend's theta(t) against the rocking oracle");
+    c->add_option("scene", o.scene, "scene with one upright free box and a [ground_motion] along x (or give --block)");
+    c->add_option("--block", o.block, "W,H[,D]: a block W wide (x), H high, D deep (default D = W) on a slab, m")
+        ->delimiter(',')->expected(2, 3);
+    c->add_option("--record", o.record, "with --block: a CSV of t_s, accel_g (default the shipped El Centro 1940 NS)");
+    c->add_option("--duration", o.duration, "with --block: simulated time, s (default 10)")->check(CLI::Range(0.01, 600.0));
+    c->add_option("--backends", o.backends, "all, or comma-separated backend names (default all)")->delimiter(',');
+    c->add_option("--jobs,-j", o.jobs, "runs at a time (default 2)")->check(CLI::Range(1, 64));
+    c->add_option("--set", o.overrides, "override a scene key: --set key=value (repeatable)");
+    c->add_option("--out,-o", o.out_dir, "output directory (default out/record)");
+    c->add_flag("--quiet,-q", o.quiet, "no progress lines");
+    return c;
+}
+
+int study_record_command(const StudyRecordOptions& o) {
+    std::unique_ptr<StagedDir> staged;
+    study::RecordSetup setup;
+    try {
+        if (o.scene.empty() == o.block.empty()) throw Error("study record: give a scene or --block W,H[,D], not both");
+        if (!o.block.empty()) {
+            const double w = o.block[0], h = o.block[1], d = o.block.size() > 2 ? o.block[2] : o.block[0];
+            const std::string rec = std::filesystem::absolute(
+                o.record.empty() ? scenarios_dir() + "/data/elcentro_1940_ns.csv" : o.record).string();
+            setup.scene_text = study::block_scene_text(w, d, h) + "\n[ground_motion]\nfile = " + toml_string(rec) +
+                               "\nunits = \"g\"\ndirection = [1.0, 0.0, 0.0]\n";
+            setup.scene_source = "--block";
+            setup.overrides.push_back({"run.duration", std::to_string(o.duration)});
+        } else {
+            if (!o.record.empty()) throw Error("--record: give the record in the scene's [ground_motion] (or use --block)");
+            setup.scene_source = resolve_scene(o.scene);
+            setup.scene_text = read_text(setup.scene_source);
+        }
+        for (const auto& ov : o.overrides) setup.overrides.push_back(parse_override(ov));
+        setup.backends = chosen(o.backends);
+        setup.jobs = o.jobs;
+        setup.quiet = o.quiet;
+        staged = std::make_unique<StagedDir>(o.out_dir, true);
+    } catch (const Error& e) {
+        std::cerr << "error: " << e.what() << "\n";
+        return kExitBadInput;
+    }
+    study::RecordResult result;
+    try {
+        result = study::run_record_study(setup, pool_backend_factory(setup.jobs));
+    } catch (const Error& e) {
+        if (stop_requested()) return interrupted_keeping("study", o.out_dir);
+        std::cerr << "error: " << e.what() << "\n";
+        return kExitBadInput;
+    }
+    study::write_record_study(staged->path().string(), result);
+    staged->commit();
+    std::cout << "record study: wrote " << o.out_dir << "/record.md, record.html\n";
+    for (const auto& h : result.histories)
+        std::cout << "  " << h.method << ": parts from the oracle at "
+                  << (std::isfinite(h.parting) ? std::to_string(h.parting) + " s" : "never") << "\n";
     return kExitOk;
 }
 

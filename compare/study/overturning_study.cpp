@@ -55,25 +55,13 @@ private:
     double e0_ = NAN;
 };
 
-int first_free(const Scene& scene) {
-    int free = -1, count = 0;
-    for (size_t i = 0; i < scene.blocks.size(); ++i)
-        if (!scene.blocks[i].fixed) {
-            if (free < 0) free = int(i);
-            ++count;
-        }
-    if (count != 1) throw Error(scene.source + ": the overturning study needs exactly one free block (found " +
-                                std::to_string(count) + ")");
-    return free;
-}
-
 OverturningRun run_backend(const OverturningSetup& s, const OverturningRun& job, const BackendMaker& make) {
     OverturningRun out = job;
     const auto start = std::chrono::steady_clock::now();
     try {
         const oracle::Pulse pulse = point_pulse(s, job.ratio, job.level);
         const Scene scene = pulse_scene(s, pulse);
-        const int b = first_free(scene);
+        const int b = rocking_block_of(scene).block;
         const double mass = cases::block_mass(scene, b), radius = std::hypot(s.b, s.h);
         const VerdictRule rule{pulse.duration(), mass * s.g * radius * (1.0 - std::cos(std::atan(s.b / s.h))),
                                std::atan(s.b / s.h)};
@@ -122,6 +110,30 @@ Boundary bracket(const std::vector<OverturningRun>& runs, const std::string& met
 
 }  // namespace
 
+RockingBlockOf rocking_block_of(const Scene& scene) {
+    RockingBlockOf r;
+    for (size_t i = 0; i < scene.blocks.size(); ++i)
+        if (!scene.blocks[i].fixed) {
+            if (r.block >= 0) throw Error(scene.source + ": the study needs exactly one free block (" +
+                                          scene.blocks[size_t(r.block)].name + " and " + scene.blocks[i].name + ")");
+            r.block = int(i);
+        }
+    if (r.block < 0) throw Error(scene.source + ": the study needs one free block (all are fixed)");
+    const BlockDef& b = scene.blocks[size_t(r.block)];
+    if (b.orientation.angularDistance(Quat::Identity()) > 1e-12)
+        throw Error(scene.source + ": blocks." + b.name + ".orientation: the block must stand upright");
+    double x0 = 1e300, x1 = -1e300, z0 = 1e300, z1 = -1e300;
+    for (const auto& c : b.corners) {
+        x0 = std::min(x0, c.x()), x1 = std::max(x1, c.x()), z0 = std::min(z0, c.z()), z1 = std::max(z1, c.z());
+    }
+    r.b = 0.5 * (x1 - x0);
+    r.h = 0.5 * (z1 - z0);
+    r.g = -scene.gravity.z();
+    if (!(r.g > 0.0) || scene.gravity.head<2>().norm() > 0.0)
+        throw Error(scene.source + ": gravity: the study needs gravity along -z");
+    return r;
+}
+
 std::string block_scene_text(double w, double d, double h) {
     if (!(w > 0.0) || !(d > 0.0) || !(h > 0.0) || w > 100.0 || d > 100.0 || h > 100.0)
         throw Error("--block: width, height and depth must be in (0, 100] m (got " + num(w) + ", " + num(h) + ", " +
@@ -133,8 +145,10 @@ std::string block_scene_text(double w, double d, double h) {
       << "[contact]\nkn = 3e9\nks = 3e9\nfriction = 5.0\ndamping_ratio = 0.05\n"
       << "[blocks.A]\nsize = [" << num(w) << ", " << num(d) << ", " << num(h) << "]\nposition = [0.0, 0.0, "
       << num(0.5 * h) << "]\nmaterial = \"stone\"\n"
-      // the slab just wider than the block: the in-house engine's hitting points scale with its area
-      << "[blocks.B]\nsize = [" << num(w + 0.8) << ", " << num(d + 0.3) << ", 0.5]\nposition = [0.0, 0.0, -0.25]\n"
+      // the slab wide enough along x to hold the block lying on its side, and no larger: the in-house
+      // engine's hitting points scale with its area (a 6 x 6 m slab makes its runs 60 times slower)
+      << "[blocks.B]\nsize = [" << num(w + 2.0 * h + 0.4) << ", " << num(d + 0.3)
+      << ", 0.5]\nposition = [0.0, 0.0, -0.25]\n"
       << "material = \"stone\"\nfixed = true\n";
     return o.str();
 }
@@ -149,17 +163,21 @@ oracle::Pulse point_pulse(const OverturningSetup& s, double ratio, double level)
     return oracle::Pulse{s.pulse, level * s.g * std::tan(o.alpha()), ratio * o.p()};
 }
 
-Scene pulse_scene(const OverturningSetup& s, const oracle::Pulse& pulse) {
-    const TimeSeries ts = pulse.sampled(pulse.duration() / 800.0);
+Scene motion_scene(const std::string& text, const std::string& source, std::vector<Override> overrides,
+                   const TimeSeries& ts, double duration) {
     std::ostringstream gm;
     gm << "\n[ground_motion]\nunits = \"m/s2\"\ndirection = [1.0, 0.0, 0.0]\ntime = [";
     for (size_t i = 0; i < ts.time.size(); ++i) gm << (i ? ", " : "") << num(ts.time[i]);
     gm << "]\nacceleration = [";
     for (size_t i = 0; i < ts.value.size(); ++i) gm << (i ? ", " : "") << num(ts.value[i]);
     gm << "]\n";
-    std::vector<Override> ov = s.overrides;
-    ov.push_back({"run.duration", num(pulse.duration() + s.tail)});
-    return parse_scene(s.scene_text + gm.str(), s.scene_source, ov);
+    overrides.push_back({"run.duration", num(duration)});
+    return parse_scene(text + gm.str(), source, overrides);
+}
+
+Scene pulse_scene(const OverturningSetup& s, const oracle::Pulse& pulse) {
+    return motion_scene(s.scene_text, s.scene_source, s.overrides, pulse.sampled(pulse.duration() / 800.0),
+                        pulse.duration() + s.tail);
 }
 
 OverturningRun oracle_run(const OverturningSetup& s, double ratio, double level) {
@@ -192,32 +210,40 @@ std::vector<OverturningRun> grid_jobs(const OverturningSetup& s) {
     return jobs;
 }
 
-std::vector<OverturningRun> run_overturning_jobs(const OverturningSetup& s, const std::vector<OverturningRun>& jobs,
-                                                 const BackendMaker& make) {
-    std::vector<OverturningRun> out(jobs.size());
+void run_pool(size_t n, int jobs, const std::function<std::string(size_t)>& method,
+              const std::function<void(size_t)>& fn) {
     std::atomic<size_t> next{0};
-    std::mutex print, ode;   // Debian's ODE keeps its collision data global: its runs one at a time
-    size_t done = 0;
+    std::mutex ode;
     auto worker = [&] {
-        for (size_t k; !stop_requested() && (k = next++) < jobs.size();) {
-            if (jobs[k].method == "ode") {
+        for (size_t k; !stop_requested() && (k = next++) < n;) {
+            if (method(k) == "ode") {
                 std::lock_guard<std::mutex> lock(ode);
-                out[k] = run_backend(s, jobs[k], make);
+                fn(k);
             } else {
-                out[k] = run_backend(s, jobs[k], make);
+                fn(k);
             }
-            std::lock_guard<std::mutex> lock(print);
-            ++done;
-            if (!s.quiet)
-                std::cerr << "overturning " << done << "/" << jobs.size() << ": " << out[k].method
-                          << " w/p=" << out[k].ratio << " a/(g tan a)=" << out[k].level << " "
-                          << (out[k].status != "completed" ? out[k].status : out[k].overturned ? "overturned" : "safe")
-                          << " " << out[k].wall_seconds << " s\n";
         }
     };
     std::vector<std::thread> pool;
-    for (int j = 0; j < std::max(1, s.jobs); ++j) pool.emplace_back(worker);
+    for (int j = 0; j < std::max(1, jobs); ++j) pool.emplace_back(worker);
     for (auto& t : pool) t.join();
+}
+
+std::vector<OverturningRun> run_overturning_jobs(const OverturningSetup& s, const std::vector<OverturningRun>& jobs,
+                                                 const BackendMaker& make) {
+    std::vector<OverturningRun> out(jobs.size());
+    std::mutex print;
+    size_t done = 0;
+    run_pool(jobs.size(), s.jobs, [&](size_t k) { return jobs[k].method; }, [&](size_t k) {
+        out[k] = run_backend(s, jobs[k], make);
+        std::lock_guard<std::mutex> lock(print);
+        ++done;
+        if (!s.quiet)
+            std::cerr << "overturning " << done << "/" << jobs.size() << ": " << out[k].method << " w/p=" << out[k].ratio
+                      << " a/(g tan a)=" << out[k].level << " "
+                      << (out[k].status != "completed" ? out[k].status : out[k].overturned ? "overturned" : "safe") << " "
+                      << out[k].wall_seconds << " s\n";
+    });
     if (stop_requested()) throw Error("the overturning study was interrupted");
     return out;
 }

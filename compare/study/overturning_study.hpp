@@ -31,6 +31,15 @@ struct OverturningSetup {
     double tail = 5.0;                 ///< s simulated after the pulse at most (runs stop once decided)
 };
 
+/// The one free block of a scene as the oracle sees it.
+struct RockingBlockOf {
+    int block = -1;          ///< index into Scene::blocks
+    double b = 0.0, h = 0.0; ///< half-width along x and half-height, m
+    double g = 9.81;         ///< |gravity|, m/s² (along −z)
+};
+/// the scene's only free block, upright, with gravity along −z; throws cairn::Error naming the key otherwise
+RockingBlockOf rocking_block_of(const Scene& scene);
+
 /// the block of `W × D × H` m (x, y, z) on a fixed 0.5 m slab, as TOML (stone, kn = 3e9 N/m³, ζ = 0.05,
 /// friction 5 so that the block rocks and never slides)
 std::string block_scene_text(double width, double depth, double height);
@@ -46,6 +55,11 @@ oracle::Pulse point_pulse(const OverturningSetup& s, double ratio, double level)
 /// the backend scene of a pulse: the template with the pulse as an inline [ground_motion] and the
 /// duration cut to the pulse plus the tail; throws cairn::Error if the template has its own motion
 Scene pulse_scene(const OverturningSetup& s, const oracle::Pulse& pulse);
+
+/// a scene from TOML text with `accel` (m/s² along +x) as an inline [ground_motion], the overrides
+/// and the duration (s) applied
+Scene motion_scene(const std::string& text, const std::string& source, std::vector<Override> overrides,
+                   const TimeSeries& accel, double duration);
 
 /// One run of a pulse on a method (a backend, or "oracle").
 struct OverturningRun {
@@ -65,6 +79,12 @@ struct VerdictRule {
     double hill = 0.0;        ///< J
     double alpha = 0.0;       ///< rad
 };
+
+/// call fn(i) for i in [0, n) on `jobs` threads, the calls of a method named "ode" (Debian's ODE
+/// keeps its collision data global) one at a time; `method(i)` names job i's backend; no new call
+/// starts once a stop is requested
+void run_pool(size_t n, int jobs, const std::function<std::string(size_t)>& method,
+              const std::function<void(size_t)>& fn);
 
 /// run every job (backend, ratio, level) on a pool of `jobs` threads (ODE's runs one at a time);
 /// deterministic: results are in job order whatever the thread count
