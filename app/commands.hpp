@@ -54,6 +54,8 @@ struct StudyOverturningOptions {
     std::string pulse = "sine";           ///< sine, cosine, ricker
     std::vector<std::string> backends;    ///< empty or "all" = every available backend
     std::string grid = "8x9";             ///< amplitudes x frequencies
+    std::vector<double> levels;           ///< --levels: the grid's a_p/(g tan a) instead of --grid's
+    std::vector<double> ratios;           ///< --ratios: the grid's w_p/p instead of --grid's
     int bisect = 10;                      ///< bisection steps per minimum overturning amplitude
     int jobs = 2;                         ///< runs at a time
     std::vector<std::string> overrides;   ///< --set key=value for every backend scene

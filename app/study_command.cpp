@@ -81,6 +81,9 @@ CLI::App* add_study_overturning(CLI::App& study, StudyOverturningOptions& o) {
     c->add_option("--pulse", o.pulse, "sine, cosine or ricker (default sine)");
     c->add_option("--backends", o.backends, "all, or comma-separated backend names (default all)")->delimiter(',');
     c->add_option("--grid", o.grid, "NxM: N amplitudes a_p/(g tan a) x M frequencies w_p/p (default 8x9)");
+    c->add_option("--levels", o.levels, "the grid's amplitudes a_p/(g tan a), ascending (instead of --grid's)")
+        ->delimiter(',');
+    c->add_option("--ratios", o.ratios, "the grid's frequencies w_p/p, ascending (instead of --grid's)")->delimiter(',');
     c->add_option("--bisect", o.bisect, "bisection steps of each minimum overturning amplitude (default 10)")
         ->check(CLI::Range(0, 40));
     c->add_option("--jobs,-j", o.jobs, "runs at a time (default 2)")->check(CLI::Range(1, 64));
@@ -159,6 +162,16 @@ study::OverturningSetup overturning_setup(const StudyOverturningOptions& o) {
     s.g = rb.g;
     s.pulse = oracle::parse_pulse_shape(o.pulse);
     parse_grid(o.grid, s);
+    auto take = [](const std::vector<double>& given, std::vector<double>& into, const char* name) {
+        if (given.empty()) return;
+        for (size_t i = 0; i < given.size(); ++i)
+            if (!(given[i] > 0.0 && given[i] <= 1000.0) || (i > 0 && !(given[i] > given[i - 1])))
+                throw Error(std::string(name) + ": values must be ascending in (0, 1000]");
+        into = given;
+    };
+    take(o.levels, s.levels, "--levels");
+    take(o.ratios, s.ratios, "--ratios");
+    if (s.levels.size() < 2) throw Error("--levels: at least 2 amplitudes");
     s.backends = chosen(o.backends);
     s.bisect = o.bisect;
     s.jobs = o.jobs;
