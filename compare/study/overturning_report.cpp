@@ -160,6 +160,14 @@ void write_overturning_study(const std::string& dir, const OverturningSetup& s, 
                 const double e = b->level() / ob->level() - 1.0;
                 cell += " (" + std::string(e >= 0 ? "+" : "") + fixed(100.0 * e, 2) + " %)";
                 worst[m] = std::max(worst[m], std::abs(e));
+                // where the oracle flips more than once, the error against its nearest flip too
+                double nearest = NAN;
+                for (double f : ob->flips)
+                    if (!std::isfinite(nearest) || std::abs(f - b->level()) < std::abs(nearest - b->level())) nearest = f;
+                if (ob->flips.size() > 1 && std::isfinite(nearest) && std::abs(nearest / ob->level() - 1.0) > 1e-3)
+                    cell += "; " + std::string(b->level() >= nearest ? "+" : "") +
+                            fixed(100.0 * (b->level() / nearest - 1.0), 2) + " % from the oracle's flip at " +
+                            fixed(nearest, 3);
             }
             row.push_back(cell);
         }

@@ -302,6 +302,7 @@ OverturningResult run_overturning(const OverturningSetup& s, const BackendMaker&
                 }
                 prev = v;
             }
+            b.flips = at;
             if (flips > 1) {
                 std::string where;
                 for (double x : at) where += (where.empty() ? "" : ", ") + num(std::round(x * 1000.0) / 1000.0);
@@ -316,7 +317,8 @@ OverturningResult run_overturning(const OverturningSetup& s, const BackendMaker&
     }
     // the oracle's boundary on a fine frequency grid, for the figure
     const double wmax = s.ratios.empty() ? 10.0 : s.ratios.back();
-    for (double w = 0.5; w <= wmax + 1e-9; w += 0.1) {
+    const double dw = std::max(0.1, (wmax - 0.5) / 100.0);   // at most about 100 frequencies
+    for (double w = 0.5; w <= wmax + 1e-9; w += dw) {
         res.fine_ratios.push_back(w);
         res.fine_levels.push_back(oracle_minimum(s, w, 1.0, top));
     }

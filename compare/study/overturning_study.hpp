@@ -103,6 +103,7 @@ struct Boundary {
     double level() const { return 0.5 * (lo + hi); }
     bool found() const { return std::isfinite(lo) && std::isfinite(hi); }
     std::string note;            ///< why not found ("no overturning on the grid", a failed run)
+    std::vector<double> flips;   ///< oracle: every verdict change within 0.8-1.2 of its minimum
 };
 
 /// The whole study.
