@@ -73,23 +73,33 @@ int study_inertia_command(const StudyInertiaOptions& o) {
     return kExitOk;
 }
 
+namespace {
+
+/// the options the overturning and record studies share
+void add_common(CLI::App& c, std::vector<double>& block, std::vector<std::string>& backends, int& jobs,
+                std::vector<std::string>& overrides, std::string& out, bool& quiet) {
+    c.add_option("--block", block, "W,H[,D]: a block W wide (x), H high, D deep (default D = W) on a slab, m")
+        ->delimiter(',')->expected(2, 3);
+    c.add_option("--backends", backends, "all, or comma-separated backend names (default all)")->delimiter(',');
+    c.add_option("--jobs,-j", jobs, "runs at a time (default 2)")->check(CLI::Range(1, 64));
+    c.add_option("--set", overrides, "override a key of every backend scene: --set key=value (repeatable)");
+    c.add_option("--out,-o", out, "output directory (default " + out + ")");
+    c.add_flag("--quiet,-q", quiet, "no progress lines");
+}
+
+}  // namespace
+
 CLI::App* add_study_overturning(CLI::App& study, StudyOverturningOptions& o) {
     auto* c = study.add_subcommand("overturning", "overturning spectra under pulses: every backend against the rocking oracle");
     c->add_option("scene", o.scene, "scene with one upright free box on a fixed base (or give --block)");
-    c->add_option("--block", o.block, "W,H[,D]: a block W wide (x), H high, D deep (default D = W) on a slab, m")
-        ->delimiter(',')->expected(2, 3);
+    add_common(*c, o.block, o.backends, o.jobs, o.overrides, o.out_dir, o.quiet);
     c->add_option("--pulse", o.pulse, "sine, cosine or ricker (default sine)");
-    c->add_option("--backends", o.backends, "all, or comma-separated backend names (default all)")->delimiter(',');
     c->add_option("--grid", o.grid, "NxM: N amplitudes a_p/(g tan a) x M frequencies w_p/p (default 8x9)");
     c->add_option("--levels", o.levels, "the grid's amplitudes a_p/(g tan a), ascending (instead of --grid's)")
         ->delimiter(',');
     c->add_option("--ratios", o.ratios, "the grid's frequencies w_p/p, ascending (instead of --grid's)")->delimiter(',');
     c->add_option("--bisect", o.bisect, "bisection steps of each minimum overturning amplitude (default 10)")
         ->check(CLI::Range(0, 40));
-    c->add_option("--jobs,-j", o.jobs, "runs at a time (default 2)")->check(CLI::Range(1, 64));
-    c->add_option("--set", o.overrides, "override a key of every backend scene: --set key=value (repeatable)");
-    c->add_option("--out,-o", o.out_dir, "output directory (default out/overturning)");
-    c->add_flag("--quiet,-q", o.quiet, "no progress lines");
     return c;
 }
 
@@ -210,15 +220,9 @@ int study_overturning_command(const StudyOverturningOptions& o) {
 CLI::App* add_study_record(CLI::App& study, StudyRecordOptions& o) {
     auto* c = study.add_subcommand("record", "rocking under a record: every backend's theta(t) against the rocking oracle");
     c->add_option("scene", o.scene, "scene with one upright free box and a [ground_motion] along x (or give --block)");
-    c->add_option("--block", o.block, "W,H[,D]: a block W wide (x), H high, D deep (default D = W) on a slab, m")
-        ->delimiter(',')->expected(2, 3);
+    add_common(*c, o.block, o.backends, o.jobs, o.overrides, o.out_dir, o.quiet);
     c->add_option("--record", o.record, "with --block: a CSV of t_s, accel_g (default the shipped El Centro 1940 NS)");
     c->add_option("--duration", o.duration, "with --block: simulated time, s (default 10)")->check(CLI::Range(0.01, 600.0));
-    c->add_option("--backends", o.backends, "all, or comma-separated backend names (default all)")->delimiter(',');
-    c->add_option("--jobs,-j", o.jobs, "runs at a time (default 2)")->check(CLI::Range(1, 64));
-    c->add_option("--set", o.overrides, "override a scene key: --set key=value (repeatable)");
-    c->add_option("--out,-o", o.out_dir, "output directory (default out/record)");
-    c->add_flag("--quiet,-q", o.quiet, "no progress lines");
     return c;
 }
 

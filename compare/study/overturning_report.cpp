@@ -16,20 +16,8 @@ namespace {
 
 std::string n10(double v) { return report::number_text(v, 10); }
 
-std::string fixed(double v, int digits) {
-    if (!std::isfinite(v)) return "–";
-    std::ostringstream o;
-    o.setf(std::ios::fixed);
-    o.precision(digits);
-    o << v;
-    return o.str();
-}
+std::string fixed(double v, int digits) { return std::isfinite(v) ? report::fixed_text(v, digits) : "–"; }
 
-std::string csv_text(const std::string& s) {
-    std::string out = "\"";
-    for (char c : s) out += c == '"' ? std::string("\"\"") : std::string(1, c == '\n' ? ' ' : c);
-    return out + "\"";
-}
 
 const Boundary* find_boundary(const OverturningResult& r, const std::string& method, double ratio) {
     for (const auto& b : r.boundaries)
@@ -109,10 +97,10 @@ void write_overturning_study(const std::string& dir, const OverturningSetup& s, 
         o << "phase,method,ratio,level,overturned,max_theta,wall_seconds,status\n";
         for (const auto& g : r.grid)
             o << "grid," << g.method << "," << n10(g.ratio) << "," << n10(g.level) << "," << int(g.overturned) << ","
-              << n10(g.max_theta) << "," << n10(g.wall_seconds) << "," << csv_text(g.status) << "\n";
+              << n10(g.max_theta) << "," << n10(g.wall_seconds) << "," << report::csv_field(g.status) << "\n";
         for (const auto& g : r.bisection)
             o << "bisection," << g.method << "," << n10(g.ratio) << "," << n10(g.level) << "," << int(g.overturned)
-              << "," << n10(g.max_theta) << "," << n10(g.wall_seconds) << "," << csv_text(g.status) << "\n";
+              << "," << n10(g.max_theta) << "," << n10(g.wall_seconds) << "," << report::csv_field(g.status) << "\n";
     });
     write_file_atomic((fs::path(dir) / "overturning_boundary.csv").string(), [&](std::ostream& o) {
         o << "method,ratio,lo,hi,level,error_vs_oracle,note\n";
@@ -120,7 +108,7 @@ void write_overturning_study(const std::string& dir, const OverturningSetup& s, 
             const Boundary* ob = find_boundary(r, "oracle", b.ratio);
             const double err = ob && ob->found() && b.found() && b.note.empty() ? b.level() / ob->level() - 1.0 : NAN;
             o << b.method << "," << n10(b.ratio) << "," << n10(b.lo) << "," << n10(b.hi) << ","
-              << n10(b.found() ? b.level() : NAN) << "," << n10(err) << "," << csv_text(b.note) << "\n";
+              << n10(b.found() ? b.level() : NAN) << "," << n10(err) << "," << report::csv_field(b.note) << "\n";
         }
     });
     std::string note;

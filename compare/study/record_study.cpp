@@ -112,14 +112,7 @@ RecordResult run_record_study(const RecordSetup& s, const RecordBackendMaker& ma
 
 namespace {
 
-std::string fixed(double v, int digits) {
-    if (!std::isfinite(v)) return "–";
-    std::ostringstream o;
-    o.setf(std::ios::fixed);
-    o.precision(digits);
-    o << v;
-    return o.str();
-}
+std::string fixed(double v, int digits) { return std::isfinite(v) ? report::fixed_text(v, digits) : "–"; }
 
 }  // namespace
 
