@@ -73,7 +73,7 @@ std::vector<std::string> write_figure(const std::string& dir, const OverturningS
        << "set xlabel 'pulse frequency w_p / p'\nset ylabel 'pulse amplitude a_p / (g tan a)'\n"
        << "set title " << report::gnuplot_string(std::string("overturning spectrum, one ") + to_string(s.pulse) +
                                                  " pulse: oracle boundary, each backend's bisected minimum")
-       << "\n";
+       << " noenhanced\n";
     const char* colours[] = {"#d62728", "#1f77b4", "#2ca02c", "#9467bd", "#8c564b", "#e377c2"};
     const char* points[] = {"7", "5", "9", "11", "13", "3"};
     gp << "plot " << report::gnuplot_file("overturning.dat") << " index 1 using 1:2 with points pt 6 ps 1.5 lc rgb "

@@ -136,12 +136,15 @@ void write_record_study(const std::string& dir, const RecordResult& r) {
         gp << "set terminal " << report::gnuplot_png_terminal() << " size 1200,600 font ',10'\n"
            << "set output 'record.png'\nset grid\nset key top left\nset datafile separator ','\n"
            << "set xlabel 'time (s)'\nset ylabel 'theta / alpha'\nset yrange [-3:3]\n"
-           << "set title " << report::gnuplot_string("rocking under " + r.record + ": each backend against the oracle")
-           << "\nplot ";
+           << "set title " << report::gnuplot_string("rocking under " + fs::path(r.record).filename().string() +
+                                                     ": each backend against the oracle")
+           << " noenhanced\nplot ";
+        const char* colours[] = {"black", "#7f7f7f", "#17becf", "#d62728", "#1f77b4", "#2ca02c", "#9467bd", "#8c564b"};
         for (size_t k = 0; k < r.histories.size(); ++k)
             gp << (k ? ", " : "") << report::gnuplot_file("../record.csv") << " every ::1 using 1:($" << k + 2 << "/"
                << report::number_text(r.alpha, 12) << ") with lines lw " << (k == 0 ? 3 : 1)
-               << (k == 1 || k == 2 ? " dt 2" : "") << " title " << report::gnuplot_string(r.histories[k].method);
+               << (k == 1 || k == 2 ? " dt 2" : "") << " lc rgb '" << colours[k % 8] << "' title "
+               << report::gnuplot_string(r.histories[k].method) << " noenhanced";
         gp << "\n";
         if (report::run_gnuplot((fs::path(dir) / "figures").string(), "record", gp.str(), note))
             figures.push_back("figures/record.png");
