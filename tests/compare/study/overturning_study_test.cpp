@@ -8,6 +8,7 @@
 #include <sstream>
 #include <string>
 
+#include <sys/wait.h>
 #include <unistd.h>
 
 #include "error.hpp"
@@ -142,4 +143,37 @@ TEST_CASE("study: under El Centro Bullet follows the oracle through the first ro
     const double parting = std::stod(md.substr(row + 11, 6));
     CHECK(parting > 2.5);
     CHECK(md.find("| oracle r+1% | ") != std::string::npos);
+}
+
+TEST_CASE("overturning: bad options and scenes are refused with exit 2 and nothing written", "[overturning]") {
+    const fs::path exe = fs::path(CAIRN_BINARY_DIR) / "app" / "cairn";
+    if (!fs::exists(exe)) FAIL("build the cairn target first: " << exe);
+    const fs::path dir = fs::path(CAIRN_BINARY_DIR) / "test_scratch" / "study" / ("refused_" + std::to_string(getpid()));
+    fs::remove_all(dir);
+    fs::create_directories(dir);
+    const std::string scenes = std::string(CAIRN_SOURCE_DIR) + "/scenarios/";
+    const std::vector<std::pair<std::string, std::string>> cases{
+        {"study overturning", "give a scene or --block"},
+        {"study overturning --block 0.2,1.0 --pulse square", "unknown pulse shape 'square'"},
+        {"study overturning --block 0.2,1.0 --grid 3y3", "--grid 3y3"},
+        {"study overturning --block 0.2,1.0 --levels 3,2", "--levels"},
+        {"study overturning --block 0.2,1.0 --backends nosuch", "--backends nosuch"},
+        {"study overturning '" + scenes + "earthquake/column_elcentro.toml'", "the study applies its own pulses"},
+        {"study overturning '" + scenes + "paper/rocking_slender.toml'", "blocks.A.orientation"},
+        {"study record --block 0.2,1.0 --record /nonexistent.csv", "cannot open the ground-motion file"},
+    };
+    for (size_t i = 0; i < cases.size(); ++i) {
+        const fs::path out = dir / ("out" + std::to_string(i)), log = dir / ("log" + std::to_string(i));
+        const std::string cmd = exe.string() + " " + cases[i].first + " -q --out '" + out.string() + "' > '" +
+                                log.string() + "' 2>&1";
+        const int status = std::system(cmd.c_str());
+        INFO(cases[i].first);
+        REQUIRE(WIFEXITED(status));
+        CHECK(WEXITSTATUS(status) == 2);
+        CHECK_FALSE(fs::exists(out));
+        std::ifstream in(log);
+        std::stringstream text;
+        text << in.rdbuf();
+        CHECK(text.str().find(cases[i].second) != std::string::npos);
+    }
 }
