@@ -6,6 +6,10 @@
 
 #include "run_job.hpp"
 
+namespace CLI {
+class App;
+}
+
 namespace cairn {
 
 /// exit codes of the cairn executable
@@ -42,6 +46,44 @@ struct StudyInertiaOptions {
 
 /// `cairn study inertia`: every mass scheme x mesh on the rocking and impact scenes (docs/inertia.md)
 int study_inertia_command(const StudyInertiaOptions& options);
+
+/// Options of `cairn study overturning` (docs/cli.md).
+struct StudyOverturningOptions {
+    std::string scene;                    ///< a scene with one free block on a fixed base, or empty
+    std::vector<double> block;            ///< --block W,H[,D]: the block's width, height, depth, m
+    std::string pulse = "sine";           ///< sine, cosine, ricker
+    std::vector<std::string> backends;    ///< empty or "all" = every available backend
+    std::string grid = "8x9";             ///< amplitudes x frequencies
+    std::vector<double> levels;           ///< --levels: the grid's a_p/(g tan a) instead of --grid's
+    std::vector<double> ratios;           ///< --ratios: the grid's w_p/p instead of --grid's
+    int bisect = 10;                      ///< bisection steps per minimum overturning amplitude
+    int jobs = 2;                         ///< runs at a time
+    std::vector<std::string> overrides;   ///< --set key=value for every backend scene
+    std::string out_dir = "out/overturning";
+    bool quiet = false;
+};
+
+/// `cairn study overturning`: overturning spectra of every backend against the rocking oracle
+int study_overturning_command(const StudyOverturningOptions& options);
+/// Options of `cairn study record` (docs/cli.md).
+struct StudyRecordOptions {
+    std::string scene;                    ///< a scene with one free block and a [ground_motion], or empty
+    std::vector<double> block;            ///< --block W,H[,D], m
+    std::string record;                   ///< --record CSV (t_s, accel_g) for --block; default El Centro
+    double duration = 10.0;               ///< s, with --block
+    std::vector<std::string> backends;    ///< empty or "all" = every available backend
+    int jobs = 2;
+    std::vector<std::string> overrides;   ///< --set key=value
+    std::string out_dir = "out/record";
+    bool quiet = false;
+};
+
+/// `cairn study record`: each backend's rocking under a record against the rocking oracle
+int study_record_command(const StudyRecordOptions& options);
+/// declare `study record` and its options under `study`
+CLI::App* add_study_record(CLI::App& study, StudyRecordOptions& options);
+/// declare `study overturning` and its options under `study`
+CLI::App* add_study_overturning(CLI::App& study, StudyOverturningOptions& options);
 
 /// Options of `cairn validate`.
 struct ValidateOptions {

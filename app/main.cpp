@@ -64,6 +64,10 @@ int main(int argc, char** argv) {
     study_inertia->add_option("--jobs,-j", inertia.jobs, "runs at a time (default 2)")->check(CLI::Range(1, 64));
     study_inertia->add_option("--n", inertia.ns, "elements per side (default 1,2,4,8)")->delimiter(',');
     study_inertia->add_flag("--quiet,-q", inertia.quiet, "no progress lines");
+    StudyOverturningOptions overturning;
+    auto* study_overturning = add_study_overturning(*study, overturning);
+    StudyRecordOptions record;
+    auto* study_record = add_study_record(*study, record);
 
     CompareOptions cmp;
     auto* compare = app.add_subcommand("compare", "run one scene on every backend variant and compare them in a report");
@@ -175,6 +179,8 @@ int main(int argc, char** argv) {
         if (app.got_subcommand(replay_cmd)) return replay_command(replay);
         if (app.got_subcommand(run_all)) return run_all_command(all);
         if (study_inertia->parsed()) return study_inertia_command(inertia);
+        if (study_overturning->parsed()) return study_overturning_command(overturning);
+        if (study_record->parsed()) return study_record_command(record);
         if (app.got_subcommand(validate)) return validate_command(val);
         if (app.got_subcommand(compare)) return compare_command(cmp);
         if (sweep_merge->parsed()) return sweep_merge_command(sweep);
