@@ -2,6 +2,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "cases/case_kind.hpp"
 #include "cases/case_util.hpp"
 #include "cases/structure_kinds.hpp"
 #include "error.hpp"
@@ -55,6 +56,28 @@ CaseAnalysis analyse_arch(const Scene& scene, const std::vector<Sample>& s, Cont
     r.metrics.push_back(at_most("energy balance error / motion energy", "", err / std::max(1e-12, motion + pmax - pmin), 0.0,
                                 1e-3, "0.1 % of the energy of the motion"));
     return r;
+}
+
+namespace {
+
+/// kind "arch": stands or collapses under its own weight, no reference curve
+class ArchKind final : public CaseKind {
+public:
+    std::string name() const override { return "arch"; }
+    std::vector<std::string> parameters() const override { return {"stands", "thickness"}; }
+    CaseAnalysis analyse(const Scene& scene, const std::vector<Sample>& s, ContactKind contact) const override {
+        return analyse_arch(scene, s, contact);
+    }
+    std::vector<double> curve(const Scene&, ContactKind, const std::vector<double>&) const override { return {}; }
+    std::vector<std::string> contact_modes(const Scene&) const override { return {"rigid"}; }
+    std::string event_label() const override { return "crown fell by the thickness"; }
+};
+
+}  // namespace
+
+const CaseKind& arch_kind() {
+    static const ArchKind k;
+    return k;
 }
 
 }  // namespace cairn::cases

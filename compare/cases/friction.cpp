@@ -5,7 +5,7 @@
 #include "analytic/oracles.hpp"
 #include "analytic/winkler_block.hpp"
 #include "cases/case_util.hpp"
-#include "cases/kinds.hpp"
+#include "cases/case_kind.hpp"
 
 namespace cairn::cases {
 
@@ -34,8 +34,6 @@ oracle::WinklerBlock winkler(const Scene& scene, double* height) {
     return {xhi - xlo, yhi - ylo, scene.contact.kn, scene.contact.ks, scene.contact.friction,
             block_mass(scene, a) * gravity(scene)};
 }
-
-}  // namespace
 
 std::vector<double> friction_curve(const Scene& scene, const std::vector<double>& t) {
     const int a = scene.reference->block;
@@ -121,6 +119,39 @@ CaseAnalysis analyse_friction(const Scene& scene, const std::vector<Sample>& s, 
         r.metrics.push_back(relative("base shear displacement", "m", mean_value(u, t0, T), u_ref, 0.03, why));
     }
     return r;
+}
+
+/// kinds "slide" and "stick" (c): a block pushed by a horizontal force on a flat base
+class FrictionKind final : public CaseKind {
+public:
+    FrictionKind(std::string name, std::string event) : name_(std::move(name)), event_(std::move(event)) {}
+    std::string name() const override { return name_; }
+    std::vector<std::string> parameters() const override { return {"force"}; }
+    CaseAnalysis analyse(const Scene& scene, const std::vector<Sample>& s, ContactKind contact) const override {
+        return analyse_friction(scene, s, contact);
+    }
+    std::vector<double> curve(const Scene& scene, ContactKind, const std::vector<double>& t) const override {
+        return friction_curve(scene, t);
+    }
+    // Coulomb's law holds for rigid contact; the engines' matched springs have no elastic stick
+    std::vector<std::string> contact_modes(const Scene&) const override { return {"rigid"}; }
+    std::string event_label() const override { return event_; }
+
+private:
+    std::string name_;
+    std::string event_;
+};
+
+}  // namespace
+
+const CaseKind& slide_kind() {
+    static const FrictionKind k("slide", "slid half the reference distance");
+    return k;
+}
+
+const CaseKind& stick_kind() {
+    static const FrictionKind k("stick", "none (the block holds)");
+    return k;
 }
 
 }  // namespace cairn::cases

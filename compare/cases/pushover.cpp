@@ -4,6 +4,7 @@
 #include <cmath>
 #include <map>
 
+#include "cases/case_kind.hpp"
 #include "cases/case_util.hpp"
 #include "cases/structure_kinds.hpp"
 #include "error.hpp"
@@ -103,6 +104,28 @@ CaseAnalysis analyse_pushover(const Scene& scene, const std::vector<Sample>& s, 
                                  "bed joints as no-tension springs kn integrated over the joint: they open gradually, "
                                  "so the stack leans and peaks below B/H (compare/analytic)"));
     return r;
+}
+
+namespace {
+
+/// kind "pushover": a stack under a ramped ground acceleration, no reference curve
+class PushoverKind final : public CaseKind {
+public:
+    std::string name() const override { return "pushover"; }
+    std::vector<std::string> parameters() const override { return {"threshold"}; }
+    CaseAnalysis analyse(const Scene& scene, const std::vector<Sample>& s, ContactKind contact) const override {
+        return analyse_pushover(scene, s, contact);
+    }
+    std::vector<double> curve(const Scene&, ContactKind, const std::vector<double>&) const override { return {}; }
+    std::vector<std::string> contact_modes(const Scene&) const override { return {"rigid"}; }
+    std::string event_label() const override { return "rotation passes the threshold"; }
+};
+
+}  // namespace
+
+const CaseKind& pushover_kind() {
+    static const PushoverKind k;
+    return k;
 }
 
 }  // namespace cairn::cases

@@ -3,9 +3,11 @@
 #include <cmath>
 
 #include "cases/case_util.hpp"
-#include "cases/kinds.hpp"
+#include "cases/case_kind.hpp"
 
 namespace cairn::cases {
+
+namespace {
 
 CaseAnalysis analyse_rolling(const Scene& scene, const std::vector<Sample>& s, ContactKind) {
     using namespace metrics;
@@ -93,6 +95,26 @@ CaseAnalysis analyse_rolling(const Scene& scene, const std::vector<Sample>& s, C
     r.metrics.push_back(at_most("kinetic energy above the bound", "J", excess, 0.0, 0.01 * m * g * drop_ref,
                                 "KE ≤ KE0 + m g (height lost); 1 % of one face's m g drop"));
     return r;
+}
+
+/// kind "rolling" (d): coarse oracles, no reference curve
+class RollingKind final : public CaseKind {
+public:
+    std::string name() const override { return "rolling"; }
+    std::vector<std::string> parameters() const override { return {"slope"}; }
+    CaseAnalysis analyse(const Scene& scene, const std::vector<Sample>& s, ContactKind contact) const override {
+        return analyse_rolling(scene, s, contact);
+    }
+    std::vector<double> curve(const Scene&, ContactKind, const std::vector<double>&) const override { return {}; }
+    std::vector<std::string> contact_modes(const Scene&) const override { return {"rigid"}; }
+    std::string event_label() const override { return "first face crossed"; }
+};
+
+}  // namespace
+
+const CaseKind& rolling_kind() {
+    static const RollingKind k;
+    return k;
 }
 
 }  // namespace cairn::cases
