@@ -109,7 +109,7 @@ TEST_CASE("reference engines: H = 0.5 W slides at mu = 0.4 and holds at mu = 0.6
     LoadDef h;
     h.block = 0;
     h.force = Vec3(0, 0.5 * weight, 0);
-    h.point = Vec3::Zero();   // at the centroid: no tipping (physics.md case c)
+    h.point = Vec3::Zero();   // at the centroid: no tipping (docs/physics.md case c)
     s.loads.push_back(h);
     // least-squares fit y = c0 + c1 t + c2 t² over 0.1 ... 0.5 s: a = 2 c2, insensitive to the
     // small rocking of a soft contact under the off-base push
@@ -139,7 +139,7 @@ TEST_CASE("reference engines: H = 0.5 W slides at mu = 0.4 and holds at mu = 0.6
 
 TEST_CASE("reference engines: slender rigid block first impact at Housner's t1", "[engines]") {
     const std::string engine = GENERATE(from_range(engine_names()));
-    // θ0 / α and the exact first-impact time from physics.md (slender variant, 0.2 x 1.0)
+    // θ0 / α and the exact first-impact time from docs/physics.md (slender variant, 0.2 x 1.0)
     auto [ratio, t1] = GENERATE(table<double, double>({{0.5, 0.34709}, {0.8, 0.60376}}));
     CAPTURE(engine, ratio);
     const double alpha = std::atan(0.2 / 1.0);

@@ -101,7 +101,7 @@ TEST_CASE("critical step of a lumped hex8 cube is sqrt(2/3)·L/c_d", "[dem][hex8
     for (double l : {1.0, 0.25}) {
         Mesh mesh = make_mesh(box_corners(Vec3(l, l, l)), {1, 1, 1});
         DeformableBody body(mesh, stone, MassScheme::lumped, 0.0, std::vector<char>(8, 0));
-        // physics.md: the fully integrated lumped hex8 cube: Δt = √(2/3)·L/c_d exactly
+        // docs/physics.md: the fully integrated lumped hex8 cube: Δt = √(2/3)·L/c_d exactly
         CHECK(2.0 / body.max_element_omega() == Approx(std::sqrt(2.0 / 3.0) * l / cd).epsilon(1e-9));
     }
 }
