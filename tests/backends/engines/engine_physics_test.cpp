@@ -143,7 +143,7 @@ TEST_CASE("reference engines: slender rigid block first impact at Housner's t1",
     auto [ratio, t1] = GENERATE(table<double, double>({{0.5, 0.34709}, {0.8, 0.60376}}));
     CAPTURE(engine, ratio);
     const double alpha = std::atan(0.2 / 1.0);
-    Scene s = rocking_scene(ratio * alpha);
+    Scene s = rocking_block(ratio * alpha);
     double previous_angle = ratio * alpha, previous_t = 0.0, impact = -1.0;
     run(engine, s, "rigid", 0.7, [&](const Sample& x) {
         double angle = angle_about_y(x.blocks[0].orientation);
@@ -180,7 +180,7 @@ TEST_CASE("every backend: the same scene twice gives identical samples", "[engin
     const std::string engine = GENERATE(from_range(all_backend_names()));
     const std::string mode = GENERATE(as<std::string>{}, "rigid", "matched");
     CAPTURE(engine, mode);
-    Scene s = rocking_scene(0.5 * std::atan(0.2));
+    Scene s = rocking_block(0.5 * std::atan(0.2));
     s.blocks[0].velocity = Vec3(0.05, 0.02, 0.0);
     std::vector<Sample> first, second;
     run(engine, s, mode, 0.4, [&](const Sample& x) { first.push_back(x); });

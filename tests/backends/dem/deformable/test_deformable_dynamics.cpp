@@ -56,7 +56,7 @@ double bar_period(MassScheme scheme, int n) {
 // cube of edge 1 m meshed n x n x n with a mass scheme
 DeformableBody cube(MassScheme scheme, int n) {
     Mesh mesh = make_mesh(box_corners(Vec3(1, 1, 1)), {n, n, n});
-    return DeformableBody(mesh, Material{"stone", 2600, 30e9, 0.2}, scheme, 0.0, std::vector<char>(mesh.nodes.size(), 0));
+    return DeformableBody(mesh, test::stone(), scheme, 0.0, std::vector<char>(mesh.nodes.size(), 0));
 }
 
 }  // namespace
