@@ -58,25 +58,10 @@ CaseAnalysis analyse_arch(const Scene& scene, const std::vector<Sample>& s, Cont
     return r;
 }
 
-namespace {
-
-/// kind "arch": stands or collapses under its own weight, no reference curve
-class ArchKind final : public CaseKind {
-public:
-    std::string name() const override { return "arch"; }
-    std::vector<std::string> parameters() const override { return {"stands", "thickness"}; }
-    CaseAnalysis analyse(const Scene& scene, const std::vector<Sample>& s, ContactKind contact) const override {
-        return analyse_arch(scene, s, contact);
-    }
-    std::vector<double> curve(const Scene&, ContactKind, const std::vector<double>&) const override { return {}; }
-    std::vector<std::string> contact_modes(const Scene&) const override { return {"rigid"}; }
-    std::string event_label() const override { return "crown fell by the thickness"; }
-};
-
-}  // namespace
-
+// kind "arch": no reference curve
 const CaseKind& arch_kind() {
-    static const ArchKind k;
+    static const FunctionKind k("arch", {"stands", "thickness"}, analyse_arch, nullptr, rigid_contact_only,
+                                "crown fell by the thickness");
     return k;
 }
 

@@ -30,6 +30,35 @@ public:
     virtual std::string event_label() const = 0;
 };
 
+/// A kind made of plain functions: how every kind in compare/cases is written.
+class FunctionKind final : public CaseKind {
+public:
+    using Analyse = CaseAnalysis (*)(const Scene&, const std::vector<Sample>&, ContactKind);
+    using Curve = std::vector<double> (*)(const Scene&, ContactKind, const std::vector<double>&);
+    using Modes = std::vector<std::string> (*)(const Scene&);
+    FunctionKind(std::string name, std::vector<std::string> parameters, Analyse analyse, Curve curve, Modes modes,
+                 std::string event_label);
+    std::string name() const override { return name_; }
+    std::vector<std::string> parameters() const override { return parameters_; }
+    CaseAnalysis analyse(const Scene& scene, const std::vector<Sample>& samples, ContactKind contact) const override;
+    std::vector<double> curve(const Scene& scene, ContactKind contact, const std::vector<double>& t) const override;
+    std::vector<std::string> contact_modes(const Scene& scene) const override { return modes_(scene); }
+    std::string event_label() const override { return event_; }
+
+private:
+    std::string name_;
+    std::vector<std::string> parameters_;
+    Analyse analyse_;
+    Curve curve_;   ///< nullptr: no reference curve
+    Modes modes_;
+    std::string event_;
+};
+
+/// contact modes of a kind judged on rigid contact only (Coulomb friction, rigid pivots)
+std::vector<std::string> rigid_contact_only(const Scene& scene);
+/// contact modes of a kind whose reference is the penalty spring kn·A
+std::vector<std::string> matched_contact_only(const Scene& scene);
+
 /// every kind, in documentation order
 const std::vector<const CaseKind*>& case_kinds();
 

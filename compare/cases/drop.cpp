@@ -100,38 +100,20 @@ CaseAnalysis analyse_drop(const Scene& scene, const std::vector<Sample>& s, Cont
     return r;
 }
 
-/// kinds "rest" (a) and "impact" (b): the reference block on the penalty springs of a face
-class DropKind final : public CaseKind {
-public:
-    DropKind(std::string name, std::vector<std::string> parameters, std::string event)
-        : name_(std::move(name)), parameters_(std::move(parameters)), event_(std::move(event)) {}
-    std::string name() const override { return name_; }
-    std::vector<std::string> parameters() const override { return parameters_; }
-    CaseAnalysis analyse(const Scene& scene, const std::vector<Sample>& s, ContactKind contact) const override {
-        return analyse_drop(scene, s, contact);
-    }
-    std::vector<double> curve(const Scene& scene, ContactKind, const std::vector<double>& t) const override {
-        return drop_curve(scene, t);
-    }
-    // the reference is the penalty spring kn·A: engines only in matched mode
-    std::vector<std::string> contact_modes(const Scene&) const override { return {"matched"}; }
-    std::string event_label() const override { return event_; }
-
-private:
-    std::string name_;
-    std::vector<std::string> parameters_;
-    std::string event_;
-};
+std::vector<double> drop_reference(const Scene& scene, ContactKind, const std::vector<double>& t) {
+    return drop_curve(scene, t);
+}
 
 }  // namespace
 
+// kinds "rest" (a) and "impact" (b): the reference is the penalty spring kn·A
 const CaseKind& rest_kind() {
-    static const DropKind k("rest", {}, "first peak penetration");
+    static const FunctionKind k("rest", {}, analyse_drop, drop_reference, matched_contact_only, "first peak penetration");
     return k;
 }
 
 const CaseKind& impact_kind() {
-    static const DropKind k("impact", {"gap"}, "first contact");
+    static const FunctionKind k("impact", {"gap"}, analyse_drop, drop_reference, matched_contact_only, "first contact");
     return k;
 }
 

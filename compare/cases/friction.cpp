@@ -121,36 +121,23 @@ CaseAnalysis analyse_friction(const Scene& scene, const std::vector<Sample>& s, 
     return r;
 }
 
-/// kinds "slide" and "stick" (c): a block pushed by a horizontal force on a flat base
-class FrictionKind final : public CaseKind {
-public:
-    FrictionKind(std::string name, std::string event) : name_(std::move(name)), event_(std::move(event)) {}
-    std::string name() const override { return name_; }
-    std::vector<std::string> parameters() const override { return {"force"}; }
-    CaseAnalysis analyse(const Scene& scene, const std::vector<Sample>& s, ContactKind contact) const override {
-        return analyse_friction(scene, s, contact);
-    }
-    std::vector<double> curve(const Scene& scene, ContactKind, const std::vector<double>& t) const override {
-        return friction_curve(scene, t);
-    }
-    // Coulomb's law holds for rigid contact; the engines' matched springs have no elastic stick
-    std::vector<std::string> contact_modes(const Scene&) const override { return {"rigid"}; }
-    std::string event_label() const override { return event_; }
-
-private:
-    std::string name_;
-    std::string event_;
-};
+std::vector<double> friction_reference(const Scene& scene, ContactKind, const std::vector<double>& t) {
+    return friction_curve(scene, t);
+}
 
 }  // namespace
 
+// kinds "slide" and "stick" (c): Coulomb's law holds for rigid contact; the engines' matched
+// springs have no elastic stick
 const CaseKind& slide_kind() {
-    static const FrictionKind k("slide", "slid half the reference distance");
+    static const FunctionKind k("slide", {"force"}, analyse_friction, friction_reference, rigid_contact_only,
+                                "slid half the reference distance");
     return k;
 }
 
 const CaseKind& stick_kind() {
-    static const FrictionKind k("stick", "none (the block holds)");
+    static const FunctionKind k("stick", {"force"}, analyse_friction, friction_reference, rigid_contact_only,
+                                "none (the block holds)");
     return k;
 }
 

@@ -83,26 +83,16 @@ CaseAnalysis analyse_incline(const Scene& scene, const std::vector<Sample>& s, C
     return r;
 }
 
-/// kind "incline"
-class InclineKind final : public CaseKind {
-public:
-    std::string name() const override { return "incline"; }
-    std::vector<std::string> parameters() const override { return {"angle"}; }
-    CaseAnalysis analyse(const Scene& scene, const std::vector<Sample>& s, ContactKind contact) const override {
-        return analyse_incline(scene, s, contact);
-    }
-    std::vector<double> curve(const Scene& scene, ContactKind, const std::vector<double>& t) const override {
-        return incline_curve(scene, t);
-    }
-    // Coulomb's law holds for rigid contact
-    std::vector<std::string> contact_modes(const Scene&) const override { return {"rigid"}; }
-    std::string event_label() const override { return "slid half the reference distance"; }
-};
+std::vector<double> incline_reference(const Scene& scene, ContactKind, const std::vector<double>& t) {
+    return incline_curve(scene, t);
+}
 
 }  // namespace
 
+// kind "incline": Coulomb's law holds for rigid contact
 const CaseKind& incline_kind() {
-    static const InclineKind k;
+    static const FunctionKind k("incline", {"angle"}, analyse_incline, incline_reference, rigid_contact_only,
+                                "slid half the reference distance");
     return k;
 }
 

@@ -106,25 +106,10 @@ CaseAnalysis analyse_pushover(const Scene& scene, const std::vector<Sample>& s, 
     return r;
 }
 
-namespace {
-
-/// kind "pushover": a stack under a ramped ground acceleration, no reference curve
-class PushoverKind final : public CaseKind {
-public:
-    std::string name() const override { return "pushover"; }
-    std::vector<std::string> parameters() const override { return {"threshold"}; }
-    CaseAnalysis analyse(const Scene& scene, const std::vector<Sample>& s, ContactKind contact) const override {
-        return analyse_pushover(scene, s, contact);
-    }
-    std::vector<double> curve(const Scene&, ContactKind, const std::vector<double>&) const override { return {}; }
-    std::vector<std::string> contact_modes(const Scene&) const override { return {"rigid"}; }
-    std::string event_label() const override { return "rotation passes the threshold"; }
-};
-
-}  // namespace
-
+// kind "pushover": no reference curve
 const CaseKind& pushover_kind() {
-    static const PushoverKind k;
+    static const FunctionKind k("pushover", {"threshold"}, analyse_pushover, nullptr, rigid_contact_only,
+                                "rotation passes the threshold");
     return k;
 }
 

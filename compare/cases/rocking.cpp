@@ -207,30 +207,19 @@ CaseAnalysis analyse_rocking(const Scene& scene, const std::vector<Sample>& s, C
     return out;
 }
 
-/// kind "housner" (e): a block released tilted rocks on its base edges
-class HousnerKind final : public CaseKind {
-public:
-    std::string name() const override { return "housner"; }
-    std::vector<std::string> parameters() const override { return {"theta0", "axis_x", "axis_y", "axis_z", "impacts"}; }
-    CaseAnalysis analyse(const Scene& scene, const std::vector<Sample>& s, ContactKind contact) const override {
-        return analyse_rocking(scene, s, contact);
-    }
-    std::vector<double> curve(const Scene& scene, ContactKind contact, const std::vector<double>& t) const override {
-        return rocking_curve(scene, contact, t);
-    }
-    // Housner's rigid impact judges rigid contact when the scene's contact is undamped; the
-    // matched springs are judged on the first impact (and, damped, on Housner's calibrated loss)
-    std::vector<std::string> contact_modes(const Scene& scene) const override {
-        if (scene.contact.damping_rule != ContactDampingRule::none) return {"matched"};
-        return {"rigid", "matched"};
-    }
-    std::string event_label() const override { return "first impact"; }
-};
+// Housner's rigid impact judges rigid contact when the scene's contact is undamped; the matched
+// springs are judged on the first impact (and, damped, on Housner's calibrated loss)
+std::vector<std::string> rocking_modes(const Scene& scene) {
+    if (scene.contact.damping_rule != ContactDampingRule::none) return {"matched"};
+    return {"rigid", "matched"};
+}
 
 }  // namespace
 
+// kind "housner" (e)
 const CaseKind& housner_kind() {
-    static const HousnerKind k;
+    static const FunctionKind k("housner", {"theta0", "axis_x", "axis_y", "axis_z", "impacts"}, analyse_rocking,
+                                rocking_curve, rocking_modes, "first impact");
     return k;
 }
 

@@ -97,23 +97,11 @@ CaseAnalysis analyse_rolling(const Scene& scene, const std::vector<Sample>& s, C
     return r;
 }
 
-/// kind "rolling" (d): coarse oracles, no reference curve
-class RollingKind final : public CaseKind {
-public:
-    std::string name() const override { return "rolling"; }
-    std::vector<std::string> parameters() const override { return {"slope"}; }
-    CaseAnalysis analyse(const Scene& scene, const std::vector<Sample>& s, ContactKind contact) const override {
-        return analyse_rolling(scene, s, contact);
-    }
-    std::vector<double> curve(const Scene&, ContactKind, const std::vector<double>&) const override { return {}; }
-    std::vector<std::string> contact_modes(const Scene&) const override { return {"rigid"}; }
-    std::string event_label() const override { return "first face crossed"; }
-};
-
 }  // namespace
 
+// kind "rolling" (d): coarse oracles, no reference curve
 const CaseKind& rolling_kind() {
-    static const RollingKind k;
+    static const FunctionKind k("rolling", {"slope"}, analyse_rolling, nullptr, rigid_contact_only, "first face crossed");
     return k;
 }
 
