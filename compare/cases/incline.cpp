@@ -45,7 +45,7 @@ metrics::Series downhill(const Scene& scene, const std::vector<Sample>& s, const
     return out;
 }
 
-std::vector<double> incline_curve(const Scene& scene, const std::vector<double>& t) {
+std::vector<double> incline_curve(const Scene& scene, ContactKind, const std::vector<double>& t) {
     const double a = oracle::incline_acceleration(gravity(scene), plane(scene).angle, scene.contact.friction);
     std::vector<double> out;
     if (a <= 0.0) return out;   // held: the elastic shear only, judged by its drift
@@ -63,7 +63,7 @@ CaseAnalysis analyse_incline(const Scene& scene, const std::vector<Sample>& s, C
     r.measured = downhill(scene, s, p.down);
     r.quantity = "displacement of A's centre of mass down the plane, m";
     if (acc > 0.0) {
-        r.analytic = incline_curve(scene, r.measured.t);
+        r.analytic = incline_curve(scene, {}, r.measured.t);
         r.analytic_label = "s = a t²/2, a = g (sin θ − μ cos θ)";
         // as the pulled block: skip the first 10 % (the shear spring's start-up), fit a quadratic
         const auto c = polyfit(r.measured, 2, 0.1 * T, T);
@@ -83,15 +83,11 @@ CaseAnalysis analyse_incline(const Scene& scene, const std::vector<Sample>& s, C
     return r;
 }
 
-std::vector<double> incline_reference(const Scene& scene, ContactKind, const std::vector<double>& t) {
-    return incline_curve(scene, t);
-}
-
 }  // namespace
 
 // kind "incline": Coulomb's law holds for rigid contact
 const CaseKind& incline_kind() {
-    static const FunctionKind k("incline", {"angle"}, analyse_incline, incline_reference, rigid_contact_only,
+    static const FunctionKind k("incline", {"angle"}, analyse_incline, incline_curve, rigid_contact_only,
                                 "slid half the reference distance");
     return k;
 }
