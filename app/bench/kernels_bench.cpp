@@ -20,6 +20,7 @@
 #include "dem/mesh.hpp"
 #include "geometry/hexahedron.hpp"
 #include "scene/scene_builder.hpp"
+#include "support/scene_builder.hpp"
 
 using namespace cairn;
 
@@ -46,7 +47,7 @@ void internal_force_case(benchmark::State& state, bool distorted, double beta) {
     const int n = int(state.range(0));
     set_threads(int(state.range(1)));
     dem::Mesh mesh = dem::make_mesh(cube(distorted), {n, n, n});
-    dem::DeformableBody body(mesh, Material{"stone", 2600, 30e9, 0.2}, MassScheme::lumped, beta,
+    dem::DeformableBody body(mesh, test::stone(), MassScheme::lumped, beta,
                              std::vector<char>(mesh.nodes.size(), 0));
     std::vector<Vec3> x = mesh.nodes, v(x.size(), Vec3::Zero()), f(x.size());
     for (auto& p : x) p += 1e-4 * Vec3(std::sin(3 * p.y()), std::cos(2 * p.z()), std::sin(p.x()));
@@ -70,12 +71,8 @@ void internal_force_damped(benchmark::State& state) { internal_force_case(state,
 // a scene of one deformable n³ cube; `on_base`: resting on a fixed rigid cube (contact included),
 // otherwise spinning in free flight (no contact: the element path of the step alone)
 Scene cube_scene(int n, bool on_base) {
-    Scene s;
+    Scene s = test::stone_scene(0.6);
     s.name = "bench";
-    s.materials.push_back({"stone", 2600, 30e9, 0.2});
-    s.contact.kn = s.contact.ks = 3e7;
-    s.contact.friction = 0.6;
-    s.run.duration = 1.0;
     BlockDef& a = s.blocks[add_box(s, "A", Vec3(1, 1, 1), Vec3(0, 0, 0.5), false)];
     a.model = BlockModel::deformable;
     a.mesh.divisions = {n, n, n};

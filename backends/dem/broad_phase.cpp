@@ -1,6 +1,7 @@
 #include "broad_phase.hpp"
 
 #include <algorithm>
+#include <cassert>
 #include <numeric>
 
 namespace cairn::dem {
@@ -15,6 +16,7 @@ void overlapping_pairs(const std::vector<Aabb>& boxes, std::vector<int>& order,
     pairs.clear();
     for (size_t a = 0; a < order.size(); ++a) {
         const Aabb& ba = boxes[order[a]];
+        assert((ba.lo.array() <= ba.hi.array()).all() && "a box's low corner is below its high corner");
         for (size_t b = a + 1; b < order.size(); ++b) {
             const Aabb& bb = boxes[order[b]];
             if (bb.lo.x() > ba.hi.x()) break;

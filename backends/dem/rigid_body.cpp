@@ -1,6 +1,7 @@
 #include "rigid_body.hpp"
 
 #include <cmath>
+#include <cassert>
 
 namespace cairn::dem {
 
@@ -19,6 +20,7 @@ double RigidBody::kinetic_energy() const { return 0.5 * mass * v.squaredNorm() +
 double kick(RigidBody& b, const Vec3& force, const Vec3& torque, double h, double alpha) {
     // implicit damping: p_new = (p_old + h·F) / (1 + α·h). The kinetic energy changes by
     // (p_new − p_old)·v_avg = h·F·v_avg − α·h·p_new·v_avg: the damping takes α·h·p_new·v_avg
+    assert(b.mass > 0.0 && h >= 0.0 && alpha >= 0.0);
     const double damp = 1.0 / (1.0 + alpha * h);
     Vec3 v_old = b.v, w_old = b.omega();
     b.v = (b.v + h * force / b.mass) * damp;
@@ -47,6 +49,7 @@ Quat quat_from_rotation_vector(const Vec3& r) {
 }
 
 void drift(RigidBody& b, double dt) {
+    assert(std::abs(b.q.squaredNorm() - 1.0) < 1e-9 && "orientations stay unit quaternions");
     b.x += dt * b.v;
     if (b.L.squaredNorm() == 0.0) return;
     // implicit midpoint for the free rotation: body angular velocity taken at the half-step

@@ -37,7 +37,7 @@ constexpr double kMatchedImpedance = 1e-3;
 // impedance of rigid contacts and of matched-mode friction rows
 constexpr double kFrictionImpedance = 0.99;
 
-// rows MuJoCo 2.2.2 could allocate here (its constraint arrays grow with njmax², engines.md)
+// rows MuJoCo 2.2.2 could allocate here (its constraint arrays grow with njmax², docs/engines.md)
 constexpr int kMaxRows = 10000;
 
 class MujocoBackend : public Backend {

@@ -179,7 +179,7 @@ report::Document bench_document(const std::string& dir) {
         d.paragraph("What bounds dem-rigid's cost: every hitting point of a contact face is evaluated each step "
                     "(about 0.1 µs each; the 0.1 m grid puts 24 on the slender block's 0.2 x 0.7 m base, 121 on a "
                     "1 m face), and its explicit step is a fraction of the contact springs' critical step, which "
-                    "falls as 1/sqrt(kn): a slender block's edge needs kn of 3e8 N/m³ or more for 1 % (physics.md). "
+                    "falls as 1/sqrt(kn): a slender block's edge needs kn of 3e8 N/m³ or more for 1 % (docs/physics.md). "
                     "The reference engines' rigid contact has 4 manifold points and takes dt = 1e-3 s, but cannot "
                     "represent the penalty spring (their matched mode needs dt 3e-5 s on the impact case).");
     }

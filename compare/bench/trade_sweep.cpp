@@ -60,7 +60,7 @@ Scene config_scene(const std::string& path, const std::vector<std::string>& sets
     const BlockDef& a = scene.blocks.at(size_t(scene.reference->block));
     if (scene.reference->kind == "housner") {
         const oracle::HousnerBlock hb{0.5 * a.size.x(), 0.5 * a.size.z(), cases::gravity(scene)};
-        // 1.5 t1: soft edges make the impact late (+38 % for the slender block at kn 3e7, physics.md)
+        // 1.5 t1: soft edges make the impact late (+38 % for the slender block at kn 3e7, docs/physics.md)
         scene.run.duration = 1.5 * hb.first_impact(scene.reference->values.at("theta0")) + 0.05;
         scene.run.output_interval = 2e-4;
     } else {

@@ -1,6 +1,6 @@
 #pragma once
 /// The side-by-side throughput of the backends on a running-bond brick wall at the same time step
-/// (issue 7, "performance of the in-house engine"): steps per second and the ratio to Bullet.
+/// (the performance of the in-house engine): steps per second and the ratio to Bullet.
 
 #include <functional>
 #include <memory>

@@ -2,6 +2,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "cases/case_kind.hpp"
 #include "cases/case_util.hpp"
 #include "cases/structure_kinds.hpp"
 #include "error.hpp"
@@ -55,6 +56,13 @@ CaseAnalysis analyse_arch(const Scene& scene, const std::vector<Sample>& s, Cont
     r.metrics.push_back(at_most("energy balance error / motion energy", "", err / std::max(1e-12, motion + pmax - pmin), 0.0,
                                 1e-3, "0.1 % of the energy of the motion"));
     return r;
+}
+
+// kind "arch": no reference curve
+const CaseKind& arch_kind() {
+    static const FunctionKind k("arch", {"stands", "thickness"}, analyse_arch, nullptr, rigid_contact_only,
+                                "crown fell by the thickness");
+    return k;
 }
 
 }  // namespace cairn::cases

@@ -1,6 +1,7 @@
 #include "cases/case_util.hpp"
 
 #include <algorithm>
+#include <cassert>
 #include <cmath>
 
 #include "geometry/hexahedron.hpp"
@@ -29,6 +30,7 @@ double contact_area(const Scene& scene) {
 double gravity(const Scene& scene) { return scene.gravity.norm(); }
 
 int free_index(const Scene& scene, int block) {
+    assert(block >= 0 && size_t(block) < scene.blocks.size());   // the loader resolved the name
     int k = 0;
     for (int i = 0; i < block; ++i)
         if (!scene.blocks[i].fixed) ++k;

@@ -3,7 +3,7 @@
 
 #include "analytic/oracles.hpp"
 #include "cases/case_util.hpp"
-#include "cases/kinds.hpp"
+#include "cases/case_kind.hpp"
 
 namespace cairn::cases {
 
@@ -27,9 +27,7 @@ metrics::Series height_series(const Scene& scene, const std::vector<Sample>& s, 
     return h;
 }
 
-}  // namespace
-
-std::vector<double> drop_curve(const Scene& scene, const std::vector<double>& t) {
+std::vector<double> drop_curve(const Scene& scene, ContactKind, const std::vector<double>& t) {
     auto h = drop_oracle(scene).heights(t);
     if (scene.reference->kind == "rest")
         for (double& y : h) y = -y;   // plotted as penetration
@@ -42,7 +40,7 @@ CaseAnalysis analyse_drop(const Scene& scene, const std::vector<Sample>& s, Cont
     const bool rest = scene.reference->kind == "rest";
     CaseAnalysis r;
     Series h = height_series(scene, s, o.gap);
-    r.analytic = drop_curve(scene, h.t);
+    r.analytic = drop_curve(scene, {}, h.t);
     r.analytic_label = "1-DOF spring-dashpot oracle, K = kn·A";
     const std::string oracle_note = "K = kn·A = " + std::to_string(o.stiffness) + " N/m, m = " +
                                     std::to_string(o.mass) + " kg";
@@ -100,6 +98,19 @@ CaseAnalysis analyse_drop(const Scene& scene, const std::vector<Sample>& s, Cont
                                     "A did not leave B and come back within the run"));
     }
     return r;
+}
+
+}  // namespace
+
+// kinds "rest" (a) and "impact" (b): the reference is the penalty spring kn·A
+const CaseKind& rest_kind() {
+    static const FunctionKind k("rest", {}, analyse_drop, drop_curve, matched_contact_only, "first peak penetration");
+    return k;
+}
+
+const CaseKind& impact_kind() {
+    static const FunctionKind k("impact", {"gap"}, analyse_drop, drop_curve, matched_contact_only, "first contact");
+    return k;
 }
 
 }  // namespace cairn::cases

@@ -5,7 +5,7 @@
 #include "analytic/oracles.hpp"
 #include "analytic/winkler_block.hpp"
 #include "cases/case_util.hpp"
-#include "cases/kinds.hpp"
+#include "cases/case_kind.hpp"
 
 namespace cairn::cases {
 
@@ -35,9 +35,7 @@ oracle::WinklerBlock winkler(const Scene& scene, double* height) {
             block_mass(scene, a) * gravity(scene)};
 }
 
-}  // namespace
-
-std::vector<double> friction_curve(const Scene& scene, const std::vector<double>& t) {
+std::vector<double> friction_curve(const Scene& scene, ContactKind, const std::vector<double>& t) {
     const int a = scene.reference->block;
     const double m = block_mass(scene, a), g = gravity(scene), H = scene.reference->values.at("force");
     const LoadDef* l = pull(scene);
@@ -71,7 +69,7 @@ CaseAnalysis analyse_friction(const Scene& scene, const std::vector<Sample>& s, 
         Series x = com_series(s, free_index(scene, a), 0, true);
         r.quantity = "x displacement of A's centre of mass, m";
         r.measured = x;
-        r.analytic = friction_curve(scene, x.t);
+        r.analytic = friction_curve(scene, {}, x.t);
         r.analytic_label = "s = a t²/2, a = (H/W − μ) g";
         const double acc = oracle::pulled_block_acceleration(m, g, H, scene.contact.friction);
         // skip the first 10 % (the shear spring's start-up transient), then fit x = c0 + c1 t + c2 t²
@@ -86,7 +84,7 @@ CaseAnalysis analyse_friction(const Scene& scene, const std::vector<Sample>& s, 
     Series u = p >= 0 ? probe_series(s, p, 0, true) : com_series(s, free_index(scene, a), 0, true);
     r.quantity = "x displacement of A's base centre, m";
     r.measured = u;
-    r.analytic = friction_curve(scene, u.t);
+    r.analytic = friction_curve(scene, {}, u.t);
     double h = 0.0;
     const auto wb = winkler(scene, &h);
     const double e = wb.eccentricity(H, h), u_ref = wb.shear_displacement(H, h);
@@ -121,6 +119,22 @@ CaseAnalysis analyse_friction(const Scene& scene, const std::vector<Sample>& s, 
         r.metrics.push_back(relative("base shear displacement", "m", mean_value(u, t0, T), u_ref, 0.03, why));
     }
     return r;
+}
+
+}  // namespace
+
+// kinds "slide" and "stick" (c): Coulomb's law holds for rigid contact; the engines' matched
+// springs have no elastic stick
+const CaseKind& slide_kind() {
+    static const FunctionKind k("slide", {"force"}, analyse_friction, friction_curve, rigid_contact_only,
+                                "slid half the reference distance");
+    return k;
+}
+
+const CaseKind& stick_kind() {
+    static const FunctionKind k("stick", {"force"}, analyse_friction, friction_curve, rigid_contact_only,
+                                "none (the block holds)");
+    return k;
 }
 
 }  // namespace cairn::cases

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <map>
 
+#include "cases/case_kind.hpp"
 #include "cases/case_util.hpp"
 #include "cases/structure_kinds.hpp"
 #include "error.hpp"
@@ -103,6 +104,13 @@ CaseAnalysis analyse_pushover(const Scene& scene, const std::vector<Sample>& s, 
                                  "bed joints as no-tension springs kn integrated over the joint: they open gradually, "
                                  "so the stack leans and peaks below B/H (compare/analytic)"));
     return r;
+}
+
+// kind "pushover": no reference curve
+const CaseKind& pushover_kind() {
+    static const FunctionKind k("pushover", {"threshold"}, analyse_pushover, nullptr, rigid_contact_only,
+                                "rotation passes the threshold");
+    return k;
 }
 
 }  // namespace cairn::cases

@@ -9,7 +9,7 @@
 #include "analytic/oracles.hpp"
 #include "analytic/spring_block.hpp"
 #include "cases/case_util.hpp"
-#include "cases/kinds.hpp"
+#include "cases/case_kind.hpp"
 
 namespace cairn::cases {
 
@@ -59,8 +59,6 @@ double amplitude(const metrics::Series& th, double a, double b) {
         if (th.t[i] > a && th.t[i] < b) m = std::max(m, std::abs(th.y[i]));
     return m;
 }
-
-}  // namespace
 
 std::vector<double> rocking_curve(const Scene& scene, ContactKind contact, const std::vector<double>& t) {
     const auto hb = housner_block(scene);
@@ -207,6 +205,22 @@ CaseAnalysis analyse_rocking(const Scene& scene, const std::vector<Sample>& s, C
                                           std::to_string(rock) + " J"));
     }
     return out;
+}
+
+// Housner's rigid impact judges rigid contact when the scene's contact is undamped; the matched
+// springs are judged on the first impact (and, damped, on Housner's calibrated loss)
+std::vector<std::string> rocking_modes(const Scene& scene) {
+    if (scene.contact.damping_rule != ContactDampingRule::none) return {"matched"};
+    return {"rigid", "matched"};
+}
+
+}  // namespace
+
+// kind "housner" (e)
+const CaseKind& housner_kind() {
+    static const FunctionKind k("housner", {"theta0", "axis_x", "axis_y", "axis_z", "impacts"}, analyse_rocking,
+                                rocking_curve, rocking_modes, "first impact");
+    return k;
 }
 
 }  // namespace cairn::cases

@@ -3,9 +3,11 @@
 #include <cmath>
 
 #include "cases/case_util.hpp"
-#include "cases/kinds.hpp"
+#include "cases/case_kind.hpp"
 
 namespace cairn::cases {
+
+namespace {
 
 CaseAnalysis analyse_rolling(const Scene& scene, const std::vector<Sample>& s, ContactKind) {
     using namespace metrics;
@@ -93,6 +95,14 @@ CaseAnalysis analyse_rolling(const Scene& scene, const std::vector<Sample>& s, C
     r.metrics.push_back(at_most("kinetic energy above the bound", "J", excess, 0.0, 0.01 * m * g * drop_ref,
                                 "KE ≤ KE0 + m g (height lost); 1 % of one face's m g drop"));
     return r;
+}
+
+}  // namespace
+
+// kind "rolling" (d): coarse oracles, no reference curve
+const CaseKind& rolling_kind() {
+    static const FunctionKind k("rolling", {"slope"}, analyse_rolling, nullptr, rigid_contact_only, "first face crossed");
+    return k;
 }
 
 }  // namespace cairn::cases

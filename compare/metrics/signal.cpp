@@ -1,6 +1,7 @@
 #include "metrics/signal.hpp"
 
 #include <algorithm>
+#include <cassert>
 #include <cmath>
 
 #include <Eigen/Dense>
@@ -8,6 +9,7 @@
 namespace cairn::metrics {
 
 std::vector<double> crossings(const Series& s, double level, Crossing dir, double t_from) {
+    assert(s.t.size() == s.y.size());
     std::vector<double> out;
     for (size_t i = 1; i < s.t.size(); ++i) {
         if (s.t[i] < t_from) continue;
@@ -82,6 +84,7 @@ std::vector<double> polyfit(const Series& s, int degree, double t0, double t1) {
 }
 
 double interpolate(const Series& s, double t) {
+    assert(s.t.size() == s.y.size() && std::is_sorted(s.t.begin(), s.t.end()));
     if (s.t.empty()) return 0.0;
     if (t <= s.t.front()) return s.y.front();
     if (t >= s.t.back()) return s.y.back();

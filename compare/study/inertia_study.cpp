@@ -60,7 +60,7 @@ double StudyPoint::event_error() const {
 
 std::vector<StudyCase> default_cases(const std::string& dir) {
     // kn = 3e9 for rocking: at 3e7 the pivot edge's own compliance moves the slender block's first
-    // impact by up to +38 % (physics.md), which would hide the mass schemes; at 3e9 under 0.01 %.
+    // impact by up to +38 % (docs/physics.md), which would hide the mass schemes; at 3e9 under 0.01 %.
     // The impact case keeps the paper's 3e7: its oracle contains the contact spring.
     return {{"rocking", dir + "/paper/rocking.toml", 3e9, true, 0.1},
             {"rocking_slender", dir + "/paper/rocking_slender.toml", 3e9, true, 0.1},

@@ -1,5 +1,5 @@
 #pragma once
-/// The mesh-inertia study (issue 6): every mass scheme × mesh n on the rocking and impact scenes —
+/// The mesh-inertia study: every mass scheme × mesh n on the rocking and impact scenes —
 /// rotational inertia against the exact value and the closed forms, first impact and impact
 /// velocity ratio against Housner, bounce period against its oracle, and the cost of each point.
 
@@ -32,7 +32,7 @@ struct StudyPoint {
     double mass = 0.0;                    ///< kg
     double ic_ratio = NAN;                ///< I_c / I_c,exact about the rocking axis (study's own assembly)
     double io_ratio = NAN;                ///< I_O / I_O,exact about the rocking edge (study's own assembly)
-    double io_closed_form = NAN;          ///< physics.md's closed form for the mesh (n × n in-plane)
+    double io_closed_form = NAN;          ///< docs/physics.md's closed form for the mesh (n × n in-plane)
     double io_engine_ratio = NAN;         ///< the engine's assembled I_O / I_O,exact (NaN: not asked)
     // rocking
     double t_impact = NAN;                ///< measured first impact, s

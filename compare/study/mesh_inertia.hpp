@@ -1,6 +1,6 @@
 #pragma once
 /// Rotational inertia of a meshed block's assembled mass under each mass scheme (docs/dem.md),
-/// computed here independently of the engine, and the closed forms of physics.md.
+/// computed here independently of the engine, and the closed forms of docs/physics.md.
 
 #include <array>
 
@@ -32,7 +32,7 @@ double inertia_about_line(const MeshInertia& mi, const Vec3& axis, const Vec3& p
 /// farthest along axis × z (for the shipped scenes, the pivot edge at +x), m
 Vec3 rocking_edge_point(const Corners& corners, const Vec3& axis);
 
-/// physics.md's closed form of I_O / I_O,exact about a base edge of a box meshed n × n in the rocking
+/// docs/physics.md's closed form of I_O / I_O,exact about a base edge of a box meshed n × n in the rocking
 /// plane: 1 − 1/(4n²) barycentre (+ 1e-3 · I_c/I_O of the exact, the engine's addition when
 /// `with_floor`), 1 + 1/(2n²) lumped, 1 consistent and corrected; I_c/I_O of a box is 1/4
 double closed_form_edge_ratio(MassScheme scheme, int n, bool with_floor = true);

@@ -118,7 +118,7 @@ std::string recommendation(const std::vector<StudyPoint>& pts) {
 
 void add_inertia_section(report::Document& doc, const std::vector<StudyPoint>& pts,
                          const std::vector<std::string>& figures, const std::string& prefix, double total_wall) {
-    doc.heading(2, "Mesh inertia study (issue 6)");
+    doc.heading(2, "Mesh inertia study");
     doc.paragraph("How much each mass scheme of the dem engine's deformable blocks gets the rotational inertia wrong, "
          "what that does to a rocking block's first impact and impact velocity ratio, and what it costs. "
          "Every point runs the shipped scene with block A deformable, the mesh and mass scheme set, and the "
@@ -126,7 +126,7 @@ void add_inertia_section(report::Document& doc, const std::vector<StudyPoint>& p
          "impact: second touch + 0.05 s). `rigid` is the rigid-block model: the contact's own error. "
          "I_O is about the rocking edge (the +x bottom edge, axis y), by the parallel-axis theorem from the "
          "study's own assembly of each scheme's mass (`compare/study/mesh_inertia.cpp`); `engine I_O ratio` is "
-         "the dem engine's `DeformableBody::inertia()` for the same mesh. The closed forms (physics.md) hold for "
+         "the dem engine's `DeformableBody::inertia()` for the same mesh. The closed forms (docs/physics.md) hold for "
          "an n × n grid in the rocking plane, which is what the rocking meshes [n,1,n] are (the 1 element across "
          "the rocking axis does not enter I_O); barycentre includes the 1e-3 of the exact inertia the engine adds "
          "(+0.00025 on I_O). The impact case meshes the cube [n,n,n]; its I_O is about a bottom edge along y.");
@@ -135,7 +135,7 @@ void add_inertia_section(report::Document& doc, const std::vector<StudyPoint>& p
     std::string setup = "Contact stiffness kn = ks and hitting-point spacing per case: ";
     for (const auto& [c, v] : kn) setup += c + " kn = " + fmt("%.3g", v.first) + " N/m³, grid " + fmt("%g", v.second) + " m; ";
     doc.paragraph(setup + "kn = 3e9 on the rocking cases because at the paper's 3e7 the pivot edge's own compliance moves "
-                 "the slender block's first impact by up to +38 % (physics.md), which would hide the mass schemes. "
+                 "the slender block's first impact by up to +38 % (docs/physics.md), which would hide the mass schemes. "
                  "Errors are relative to Housner's exact t1 (exact inertia) and to DroppedBlock::bounce_period. "
                  "Wall time: median of the repeats, two runs at a time on 2 cores; element updates = steps × "
                  "elements of A.");

@@ -1,5 +1,7 @@
 #include "validation/plan.hpp"
 
+#include "cases/case_kind.hpp"
+
 namespace cairn::validation {
 
 cases::ContactKind contact_kind(const Variant& v, const Scene& scene) {
@@ -20,11 +22,10 @@ const std::vector<std::string>& paper_cases() {
 }
 
 std::vector<Variant> variants_for(const Scene& scene, const std::vector<std::string>& backends) {
-    const std::string kind = scene.reference ? scene.reference->kind : "";
-    const bool damped = scene.contact.damping_rule != ContactDampingRule::none;
-    const bool rigid_ref = kind == "slide" || kind == "stick" || kind == "rolling" || (kind == "housner" && !damped) ||
-                           kind == "pushover" || kind == "arch";
-    const bool penalty_ref = kind == "rest" || kind == "impact" || kind == "housner";
+    // the reference kind decides which engine contact modes it can judge; an unknown kind is an
+    // error here rather than a case run on dem alone
+    std::vector<std::string> modes;
+    if (scene.reference) modes = cases::case_kind(scene.reference->kind, scene.source).contact_modes(scene);
     std::vector<Variant> out;
     for (const auto& b : backends) {
         if (b == "dem") {
@@ -32,8 +33,7 @@ std::vector<Variant> variants_for(const Scene& scene, const std::vector<std::str
             out.push_back({"dem-deformable", b, "rigid", "deformable"});
             continue;
         }
-        if (rigid_ref) out.push_back({b + "-rigid", b, "rigid", "rigid"});
-        if (penalty_ref) out.push_back({b + "-matched", b, "matched", "rigid"});
+        for (const auto& m : modes) out.push_back({b + "-" + m, b, m, "rigid"});
     }
     return out;
 }

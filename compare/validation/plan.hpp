@@ -30,9 +30,9 @@ cases::ContactKind contact_kind(const Variant& v, const Scene& scene);
 const std::vector<std::string>& paper_cases();
 
 /// the variants that make sense for `scene` among `backends` (registry names, in that order):
-/// dem rigid and deformable always; the reference engines in rigid mode where a rigid-contact
-/// reference holds (friction, rolling, undamped rocking) and in matched mode where the reference is
-/// the penalty spring (stability, impact, undamped and damped rocking)
+/// dem rigid and deformable always; the reference engines in each contact mode the scene's
+/// reference kind can judge (cases::CaseKind::contact_modes); none for a scene without a
+/// reference. Throws cairn::Error for a reference kind without a CaseKind.
 std::vector<Variant> variants_for(const Scene& scene, const std::vector<std::string>& backends);
 
 }  // namespace cairn::validation

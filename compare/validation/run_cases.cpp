@@ -7,6 +7,7 @@
 #include <mutex>
 #include <thread>
 
+#include "cases/case_kind.hpp"
 #include "error.hpp"
 #include "metrics/diff.hpp"
 #include "output/atomic_write.hpp"
@@ -106,8 +107,7 @@ void diff_runs(CaseResult& c) {
         if (r.analysis.has_event && base->analysis.has_event) {
             shift = r.analysis.event_time - base->analysis.event_time;
             r.diffs.push_back(metrics::info("first-event time shift" + vs, "s", shift, NAN,
-                                            "event: " + std::string(c.scene.reference->kind == "housner" ? "first impact"
-                                                                                                       : "first case event")));
+                                            "event: " + cases::case_kind(c.scene.reference->kind, c.scene.source).event_label()));
         }
         if (probe >= 0) {
             r.diffs.push_back(metrics::info("probe path RMS" + vs, "m",

@@ -50,7 +50,7 @@ TEST_CASE("paper case (e), reading B: a 0.7 x 1.0 m block tilted 30 deg rocks ab
         double min_tilt;
         double t1 = first_impact(*b, 1.2, &min_tilt);
         INFO("kn = " << kn << ", first impact " << t1 << " s");
-        // physics.md: a 2-D sketch of this case with 8 points across the 0.7 m face was +0.13 %
+        // docs/physics.md: a 2-D sketch of this case with 8 points across the 0.7 m face was +0.13 %
         // late at kn = 3e7 and within 0.02 % at 3e8; the issue allows 2 % for the DEM at the
         // paper's stiffness and closer as kn grows: 1 % and 0.5 % here
         CHECK(t1 == Approx(hb.first_impact(theta0)).epsilon(kn < 1e8 ? 0.01 : 0.005));
@@ -67,7 +67,7 @@ TEST_CASE("slender block (0.2 x 1.0 m) rocks with Housner's first impact at a st
         double min_tilt;
         double t1 = first_impact(*b, 0.8, &min_tilt);
         INFO("theta0 = " << frac << " alpha, first impact " << t1 << " s");
-        // physics.md: at kn = 3e9 a 2-D model was within 0.01 % for every grid; 0.5 % leaves
+        // docs/physics.md: at kn = 3e9 a 2-D model was within 0.01 % for every grid; 0.5 % leaves
         // room for the 3-D block's edge springs and the sampling of the crossing
         CHECK(t1 == Approx(hb.first_impact(theta0)).epsilon(0.005));
     }

@@ -9,15 +9,9 @@
 namespace cairn::test {
 
 Scene base_scene(const std::string& name) {
-    Scene s;
+    Scene s = stone_scene(0.6);
     s.name = name;
-    s.source = "<test>";
-    s.materials.push_back({"stone", 2600.0, 30e9, 0.2});
-    s.contact.kn = 3e7;
-    s.contact.ks = 3e7;
-    s.contact.friction = 0.6;
     s.run.dt = 1e-4;
-    s.run.duration = 1.0;
     return s;
 }
 
@@ -30,19 +24,6 @@ int add_hexahedron_box(Scene& scene, const std::string& name, const Vec3& size, 
     for (auto& c : scene.blocks[i].corners) c += 0.5 * size;
     scene.blocks[i].position = centre - 0.5 * size;
     return i;
-}
-
-Scene rocking_scene(double theta0) {
-    Scene s = base_scene("rocking");
-    s.contact.friction = 1.0;   // no sliding at the pivot
-    add_box(s, "A", Vec3(0.2, 0.7, 1.0), Vec3::Zero(), false);
-    add_box(s, "B", Vec3(1.0, 1.0, 0.5), Vec3(0, 0, -0.25), true);
-    BlockDef& a = s.blocks[0];
-    a.orientation = Quat(Eigen::AngleAxisd(theta0, Vec3::UnitY()));
-    // pivot: block-frame point (0.1, 0, -0.5) placed at (0.1, 0, 0)
-    Vec3 pivot_block(0.1, 0.0, -0.5);
-    a.position = Vec3(0.1, 0.0, 0.0) - a.orientation * pivot_block;
-    return s;
 }
 
 std::vector<std::string> engine_names() {

@@ -8,6 +8,7 @@
 #include "backend/backend.hpp"
 #include "scene/scene.hpp"
 #include "scene/scene_builder.hpp"
+#include "support/scene_builder.hpp"
 
 namespace cairn::test {
 
@@ -20,10 +21,6 @@ using cairn::add_box;
 /// add a box-shaped block given as a general hexahedron (Shape::hexahedron); returns its index
 int add_hexahedron_box(Scene& scene, const std::string& name, const Vec3& size, const Vec3& centre,
                        bool fixed);
-
-/// a 0.2 x 0.7 x 1.0 m block resting on its x = +0.1 m bottom edge on a fixed base, tilted by
-/// theta0 (rad) about y; top of the base at z = 0
-Scene rocking_scene(double theta0);
 
 /// the reference-engine backends built into this binary (every registered name except "dem")
 std::vector<std::string> engine_names();

@@ -56,7 +56,7 @@ double bar_period(MassScheme scheme, int n) {
 // cube of edge 1 m meshed n x n x n with a mass scheme
 DeformableBody cube(MassScheme scheme, int n) {
     Mesh mesh = make_mesh(box_corners(Vec3(1, 1, 1)), {n, n, n});
-    return DeformableBody(mesh, Material{"stone", 2600, 30e9, 0.2}, scheme, 0.0, std::vector<char>(mesh.nodes.size(), 0));
+    return DeformableBody(mesh, test::stone(), scheme, 0.0, std::vector<char>(mesh.nodes.size(), 0));
 }
 
 }  // namespace
@@ -74,7 +74,7 @@ TEST_CASE("mass schemes: consistent is exact, nodal lumping gives 1 + 2/n^2, bar
     const double exact = 2600.0 * 1.0 / 6.0;  // m L²/6 for a unit cube about an axis through its centre
     for (int n : {1, 2, 4}) {
         INFO("n = " << n);
-        // closed forms of physics.md, per direction; the quadrature is exact for a box mesh
+        // closed forms of docs/physics.md, per direction; the quadrature is exact for a box mesh
         CHECK(cube(MassScheme::consistent, n).inertia()(0, 0) == Approx(exact).epsilon(1e-12));
         CHECK(cube(MassScheme::lumped, n).inertia()(1, 1) == Approx(exact * (1 + 2.0 / (n * n))).epsilon(1e-12));
         // barycentre: plus the documented 1e-3 of the exact inertia that keeps M positive definite
@@ -170,7 +170,7 @@ TEST_CASE("paper case (a) with a deformable block: penetration and period within
         REQUIRE(up.size() >= 3);
         INFO("scheme " << to_string(scheme));
         // 1 %: the issue's tolerance; the block's own compression under its weight (ρ g L²/2E ≈
-        // 4e-7 m) shifts the centre by 0.05 % of d and the period by ~0.1 % (physics.md)
+        // 4e-7 m) shifts the centre by 0.05 % of d and the period by ~0.1 % (docs/physics.md)
         CHECK(-0.5 * (zmin + zmax) == Approx(ref.penetration()).epsilon(0.01));
         CHECK((up.back() - up.front()) / (up.size() - 1) == Approx(ref.period()).epsilon(0.01));
     }

@@ -8,6 +8,7 @@
 #include "dem/deformable/hex8.hpp"
 #include "dem/block_builder.hpp"
 #include "dem/mesh.hpp"
+#include "support/scene_builder.hpp"
 
 using namespace cairn;
 using namespace cairn::dem;
@@ -74,7 +75,7 @@ TEST_CASE("hex8 internal forces are the gradient of the strain energy (central d
 TEST_CASE("patch test: an affine deformation of a distorted mesh gives zero force at inner nodes", "[dem][hex8]") {
     Corners c = distorted();
     Mesh mesh = make_mesh(c, {2, 2, 2});
-    Material stone{"stone", 2600, 30e9, 0.2};
+    const Material stone = test::stone();
     DeformableBody body(mesh, stone, MassScheme::lumped, 0.0, std::vector<char>(mesh.nodes.size(), 0));
     Mat3 a;
     a << 1.001, 0.0004, 0.0, 0.0002, 0.9995, 0.0003, 0.0, 0.0001, 1.0007;
@@ -95,20 +96,20 @@ TEST_CASE("patch test: an affine deformation of a distorted mesh gives zero forc
 }
 
 TEST_CASE("critical step of a lumped hex8 cube is sqrt(2/3)·L/c_d", "[dem][hex8][timestep]") {
-    Material stone{"stone", 2600, 30e9, 0.2};
+    const Material stone = test::stone();
     const double cd = std::sqrt((kStone.lambda + 2 * kStone.mu) / stone.density);
     REQUIRE(cd == Approx(3580.6).epsilon(1e-4));
     for (double l : {1.0, 0.25}) {
         Mesh mesh = make_mesh(box_corners(Vec3(l, l, l)), {1, 1, 1});
         DeformableBody body(mesh, stone, MassScheme::lumped, 0.0, std::vector<char>(8, 0));
-        // physics.md: the fully integrated lumped hex8 cube: Δt = √(2/3)·L/c_d exactly
+        // docs/physics.md: the fully integrated lumped hex8 cube: Δt = √(2/3)·L/c_d exactly
         CHECK(2.0 / body.max_element_omega() == Approx(std::sqrt(2.0 / 3.0) * l / cd).epsilon(1e-9));
     }
 }
 
 TEST_CASE("a meshed side carries one regular grid of hitting points whose areas sum to the side's", "[dem][contact]") {
     Scene s;
-    s.materials.push_back({"stone", 2600, 30e9, 0.2});
+    s.materials.push_back(test::stone());
     s.contact.scheme = ContactScheme::paper;
     s.contact.grid_spacing = 0.1;
     BlockDef d;

@@ -14,13 +14,14 @@
 #include "dem/deformable/hex8.hpp"
 #include "dem/deformable/hex8_batch.hpp"
 #include "dem/mesh.hpp"
+#include "support/scene_builder.hpp"
 
 using namespace cairn;
 using namespace cairn::dem;
 
 namespace {
 
-const Material kStone{"stone", 2600, 30e9, 0.2};
+const Material kStone = test::stone();
 
 // a distorted hexahedron: its trilinear subdivision has no parallelepiped element
 Corners distorted() {

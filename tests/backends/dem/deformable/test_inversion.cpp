@@ -24,7 +24,7 @@ void forces(DeformableBody& body, const std::vector<Vec3>& x) {
 }  // namespace
 
 TEST_CASE("det F <= 0 is found in the element that inverted, on both kernel paths", "[dem][deformable][inversion]") {
-    const Material stone{"stone", 2600, 30e9, 0.2};
+    const Material stone = test::stone();
     // a box (parallelepiped elements) and a tapered block (general elements, Jacobian per Gauss point)
     Corners tapered = box_corners(Vec3(2, 1, 1));
     for (int a = 4; a < 8; ++a) tapered[a].y() *= 0.5;

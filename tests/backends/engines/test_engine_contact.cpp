@@ -60,10 +60,7 @@ TEST_CASE("every backend: each interface of a matched stack of three cubes carri
     Scene s = base_scene("stack");
     s.contact.damping_rule = ContactDampingRule::ratio;
     s.contact.damping = 0.5;   // settles in a few of the slowest periods (about 0.13 s)
-    add_box(s, "A", Vec3(1, 1, 1), Vec3(0, 0, 0.5), false);
-    add_box(s, "B", Vec3(1, 1, 1), Vec3(0, 0, 1.5), false);
-    add_box(s, "C", Vec3(1, 1, 1), Vec3(0, 0, 2.5), false);
-    add_box(s, "base", Vec3(1, 1, 1), Vec3(0, 0, -0.5), true);
+    add_cube_stack(s, 3);
     auto b = build_backend(engine, s, "matched");
     const long long steps = std::llround(2.0 / b->time_step());
     for (long long i = 0; i < steps; ++i)

@@ -113,7 +113,7 @@ TEST_CASE("reference engines: H = 0.5 W slides at mu = 0.4 and holds at mu = 0.6
     LoadDef h;
     h.block = 0;
     h.force = Vec3(0, 0.5 * weight, 0);
-    h.point = Vec3(0, 0, point_z);   // no tipping either way: e = H h / W <= 0.125 m < B/2
+    h.point = Vec3(0, 0, point_z);   // no tipping either way: e = H h / W <= 0.125 m < B/2 (docs/physics.md case c)
     s.loads.push_back(h);
     // least-squares fit y = c0 + c1 t + c2 t² over 0.1 ... 0.5 s: a = 2 c2, insensitive to the
     // small rocking of a soft contact under the off-base push
@@ -143,11 +143,11 @@ TEST_CASE("reference engines: H = 0.5 W slides at mu = 0.4 and holds at mu = 0.6
 
 TEST_CASE("reference engines: slender rigid block first impact at Housner's t1", "[engines]") {
     const std::string engine = GENERATE(from_range(engine_names()));
-    // θ0 / α and the exact first-impact time from physics.md (slender variant, 0.2 x 1.0)
+    // θ0 / α and the exact first-impact time from docs/physics.md (slender variant, 0.2 x 1.0)
     auto [ratio, t1] = GENERATE(table<double, double>({{0.5, 0.34709}, {0.8, 0.60376}}));
     CAPTURE(engine, ratio);
     const double alpha = std::atan(0.2 / 1.0);
-    Scene s = rocking_scene(ratio * alpha);
+    Scene s = rocking_block(ratio * alpha);
     double previous_angle = ratio * alpha, previous_t = 0.0, impact = -1.0;
     run(engine, s, "rigid", 0.7, [&](const Sample& x) {
         double angle = angle_about_y(x.blocks[0].orientation);
@@ -184,7 +184,7 @@ TEST_CASE("every backend: the same scene twice gives identical samples", "[engin
     const std::string engine = GENERATE(from_range(all_backend_names()));
     const std::string mode = GENERATE(as<std::string>{}, "rigid", "matched");
     CAPTURE(engine, mode);
-    Scene s = rocking_scene(0.5 * std::atan(0.2));
+    Scene s = rocking_block(0.5 * std::atan(0.2));
     s.blocks[0].velocity = Vec3(0.05, 0.02, 0.0);
     std::vector<Sample> first, second;
     run(engine, s, mode, 0.4, [&](const Sample& x) { first.push_back(x); });

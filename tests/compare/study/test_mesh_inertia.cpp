@@ -1,4 +1,4 @@
-// the study's assembly of each mass scheme's rotational inertia against physics.md's closed forms
+// the study's assembly of each mass scheme's rotational inertia against docs/physics.md's closed forms
 #include <catch2/catch.hpp>
 
 #include <cmath>
@@ -37,7 +37,7 @@ TEST_CASE("I_O ratios of the four schemes follow the closed forms for n = 1, 2, 
 }
 
 TEST_CASE("the closed forms name the paper's defect: 3/4 and 3/2 of I_O with one element", "[study]") {
-    // physics.md: 1 − 1/(4n²) and 1 + 1/(2n²); barycentre adds 1e-3 of the exact I_c = 1/4 of I_O
+    // docs/physics.md: 1 − 1/(4n²) and 1 + 1/(2n²); barycentre adds 1e-3 of the exact I_c = 1/4 of I_O
     CHECK(closed_form_edge_ratio(MassScheme::barycentre, 1, false) == 0.75);
     CHECK(closed_form_edge_ratio(MassScheme::barycentre, 1) == Approx(0.75025).epsilon(1e-14));
     CHECK(closed_form_edge_ratio(MassScheme::lumped, 1) == 1.5);

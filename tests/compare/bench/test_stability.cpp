@@ -3,6 +3,7 @@
 
 #include "bench/stability.hpp"
 #include "geometry/hexahedron.hpp"
+#include "support/scene_builder.hpp"
 
 using namespace cairn;
 using namespace cairn::bench;
@@ -49,7 +50,7 @@ TEST_CASE("bench stability: classes of synthetic runs", "[bench]") {
 
 TEST_CASE("bench stability: penetration of the reference block's lowest corner into the fixed block", "[bench]") {
     Scene s;
-    s.materials.push_back({"stone", 2600.0, 30e9, 0.2});
+    s.materials.push_back(test::stone());
     BlockDef a, b;
     a.name = "A";
     a.size = Vec3(1, 1, 1);

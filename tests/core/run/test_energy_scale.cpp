@@ -4,6 +4,7 @@
 #include "geometry/hexahedron.hpp"
 #include "run/energy_scale.hpp"
 #include "scene/scene_builder.hpp"
+#include "support/scene_builder.hpp"
 
 using namespace cairn;
 
@@ -21,7 +22,7 @@ Energies energies(double kinetic, double potential, double contact = 0.0, double
 // one free 1 m cube of 2600 kg/m³ under g = 9.81 m/s²: gravity's reach m·g·√3 = 44178 J
 Scene cube_scene() {
     Scene s;
-    s.materials.push_back({"stone", 2600.0, 30e9, 0.2});
+    s.materials.push_back(test::stone());
     add_box(s, "A", Vec3(1, 1, 1), Vec3(0, 0, 0.5), false);
     add_box(s, "B", Vec3(1, 1, 1), Vec3(0, 0, -0.5), true);   // fixed: no reach
     return s;

@@ -63,7 +63,7 @@ TEST_CASE("study: barycentre rocks early, lumped late, consistent and corrected 
         const double err = p.event_error();
         if (p.scheme == "barycentre") CHECK(err < -0.01);   // closed forms: −13.4 % (n = 1), −3.2 % (n = 2)
         if (p.scheme == "lumped") CHECK(err > 0.01);        // +22.5 % (n = 1), +6.1 % (n = 2)
-        // exact inertia: what is left is the contact at kn = 3e9 (physics.md: < 0.01 %), the block's
+        // exact inertia: what is left is the contact at kn = 3e9 (docs/physics.md: < 0.01 %), the block's
         // elasticity and the 2e-4 s sampling (linear interpolation of θ): 0.05 % covers all three
         if (p.scheme == "consistent" || p.scheme == "corrected" || p.scheme == "rigid") CHECK(std::abs(err) < 5e-4);
         // every scheme's first impact is a rigid block's with the scheme's I_O: t1·√(I_O/I_O,exact),
@@ -79,7 +79,7 @@ TEST_CASE("study: the impact case's bounce period does not depend on the mass sc
         if (p.case_name != "impact") continue;
         INFO(p.scheme << " n = " << p.n);
         // every scheme has the exact mass and centre: the drop sees only the contact spring; 0.3 %
-        // allows the block's elasticity (physics.md: ~0.1 %) and the rigid model's larger step
+        // allows the block's elasticity (docs/physics.md: ~0.1 %) and the rigid model's larger step
         CHECK(std::abs(p.event_error()) < 3e-3);
     }
 }

@@ -1,4 +1,4 @@
-// the analytic oracles against the numbers of physics.md
+// the analytic oracles against the numbers of docs/physics.md
 #include <catch2/catch.hpp>
 
 #include <cmath>
@@ -12,9 +12,9 @@ constexpr double kMass = 2600.0, kStiff = 3e7, kG = 9.81;
 constexpr double kDeg = M_PI / 180.0;
 }  // namespace
 
-TEST_CASE("stability and impact closed forms match physics.md", "[oracle]") {
+TEST_CASE("stability and impact closed forms match docs/physics.md", "[oracle]") {
     RestingBlock rest{kMass, kStiff, kG};
-    // physics.md prints 4-5 significant digits: compare to half a unit of the last digit
+    // docs/physics.md prints 4-5 significant digits: compare to half a unit of the last digit
     CHECK(rest.penetration() == Approx(8.502e-4).margin(0.5e-7));
     CHECK(rest.period() == Approx(0.058493).margin(0.5e-6));
     DroppedBlock drop{kMass, kStiff, kG, 0.1};
@@ -40,9 +40,9 @@ TEST_CASE("the damped drop without damping reproduces the closed forms", "[oracl
     CHECK(h[1] == Approx(0.1).epsilon(1e-4));   // RK4 at T/2e4 over 0.3 s: well below 1e-4
 }
 
-TEST_CASE("restitution with gravity and release matches physics.md", "[oracle]") {
+TEST_CASE("restitution with gravity and release matches docs/physics.md", "[oracle]") {
     struct Row { double zeta, e; };
-    // physics.md: "with gravity and a contact that releases when the force reaches zero: 0.720 at
+    // docs/physics.md: "with gravity and a contact that releases when the force reaches zero: 0.720 at
     // ζ = 0.1, 0.527 at 0.2, 0.281 at 0.4" (three digits: half a unit of the third)
     for (Row r : {Row{0.1, 0.720}, Row{0.2, 0.527}, Row{0.4, 0.281}}) {
         INFO("zeta " << r.zeta);
@@ -57,7 +57,7 @@ TEST_CASE("restitution with gravity and release matches physics.md", "[oracle]")
     CHECK(d.first_bounce().max_penetration < 13.9e-3);
 }
 
-TEST_CASE("Housner's rocking block matches physics.md", "[oracle]") {
+TEST_CASE("Housner's rocking block matches docs/physics.md", "[oracle]") {
     HousnerBlock b{0.35, 0.5, kG};   // reading B
     CHECK(b.alpha() == Approx(34.99 * kDeg).margin(0.005 * kDeg));
     CHECK(b.radius() == Approx(0.61033).margin(0.5e-5));

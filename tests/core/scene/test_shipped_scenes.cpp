@@ -52,7 +52,7 @@ std::pair<double, double> z_range(const BlockDef& b) {
 }
 }  // namespace
 
-TEST_CASE("the paper scenes start A where physics.md puts it", "[scene][scenarios]") {
+TEST_CASE("the paper scenes start A where docs/physics.md puts it", "[scene][scenarios]") {
     for (const char* name : {"stability", "friction_slide", "friction_stick", "friction_stick_base", "impact"}) {
         INFO(name);
         Scene s = paper(name);

@@ -13,7 +13,7 @@ Series sample(double t0, double t1, double dt, double (*f)(double)) {
     for (double t = t0; t <= t1 + 1e-12; t += dt) { s.t.push_back(t); s.y.push_back(f(t)); }
     return s;
 }
-constexpr double kPeriod = 0.058493;   // stability period of physics.md
+constexpr double kPeriod = 0.058493;   // stability period of docs/physics.md
 double swing(double t) { return 8.502e-4 * (1.0 - std::cos(2.0 * M_PI * t / kPeriod)); }
 double parabola(double t) { return 0.3 + 0.2 * t + 0.5 * 0.981 * t * t; }
 }  // namespace

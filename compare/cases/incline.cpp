@@ -1,0 +1,95 @@
+// a block released on a plane inclined θ to the horizontal: it slides at g(sin θ − μ cos θ) when
+// tan θ > μ, else it holds (only the elastic shear of its base)
+#include <algorithm>
+#include <cmath>
+
+#include "analytic/oracles.hpp"
+#include "cases/case_kind.hpp"
+#include "cases/case_util.hpp"
+#include "error.hpp"
+
+namespace cairn::cases {
+
+namespace {
+
+/// the plane of the scene: the downhill unit direction and its angle θ to the horizontal (rad),
+/// from gravity and the top face (block-frame +z) of the support, the first fixed block; the
+/// reference's `angle`, when given, must agree
+struct Plane {
+    Vec3 down;
+    double angle;
+};
+
+Plane plane(const Scene& scene) {
+    const BlockDef* support = nullptr;
+    for (const auto& b : scene.blocks)
+        if (b.fixed) { support = &b; break; }
+    if (!support) throw Error(scene.source + ": an incline reference needs a fixed block as its plane");
+    const Vec3 n = support->orientation * Vec3::UnitZ(), g = scene.gravity.normalized();
+    const Vec3 along = g - g.dot(n) * n;
+    Plane p{along.norm() > 1e-12 ? Vec3(along.normalized()) : Vec3::UnitX(), std::acos(std::clamp(-g.dot(n), -1.0, 1.0))};
+    const auto it = scene.reference->values.find("angle");
+    // 1e-3 rad: an angle written to four decimals in degrees or radians
+    if (it != scene.reference->values.end() && std::abs(it->second - p.angle) > 1e-3)
+        throw Error(scene.source + ": [reference] angle = " + std::to_string(it->second) +
+                    " rad, but the top face of block '" + support->name + "' is inclined " +
+                    std::to_string(p.angle) + " rad to the horizontal");
+    return p;
+}
+
+/// displacement of the reference block's centre of mass down the plane, from its start, m
+metrics::Series downhill(const Scene& scene, const std::vector<Sample>& s, const Vec3& down) {
+    const int f = free_index(scene, scene.reference->block);
+    metrics::Series out{times(s), {}};
+    for (const auto& x : s) out.y.push_back((x.blocks.at(f).position - s.front().blocks.at(f).position).dot(down));
+    return out;
+}
+
+std::vector<double> incline_curve(const Scene& scene, ContactKind, const std::vector<double>& t) {
+    const double a = oracle::incline_acceleration(gravity(scene), plane(scene).angle, scene.contact.friction);
+    std::vector<double> out;
+    if (a <= 0.0) return out;   // held: the elastic shear only, judged by its drift
+    for (double x : t) out.push_back(0.5 * a * x * x);
+    return out;
+}
+
+CaseAnalysis analyse_incline(const Scene& scene, const std::vector<Sample>& s, ContactKind) {
+    using namespace metrics;
+    const Plane p = plane(scene);
+    const int b = scene.reference->block;
+    const double g = gravity(scene), mu = scene.contact.friction, T = s.back().t;
+    const double acc = oracle::incline_acceleration(g, p.angle, mu);
+    CaseAnalysis r;
+    r.measured = downhill(scene, s, p.down);
+    r.quantity = "displacement of A's centre of mass down the plane, m";
+    if (acc > 0.0) {
+        r.analytic = incline_curve(scene, {}, r.measured.t);
+        r.analytic_label = "s = a t²/2, a = g (sin θ − μ cos θ)";
+        // as the pulled block: skip the first 10 % (the shear spring's start-up), fit a quadratic
+        const auto c = polyfit(r.measured, 2, 0.1 * T, T);
+        r.metrics.push_back(relative("sliding acceleration", "m/s²", 2.0 * c[2], acc, 0.01,
+                                     "g (sin θ − μ cos θ), quadratic fit over the last 90 % of the run; 1 %"));
+        const auto half = crossings(r.measured, 0.25 * acc * T * T, Crossing::up);
+        if (!half.empty()) r.event_time = half[0], r.has_event = true;
+        return r;
+    }
+    // holds (tan θ ≤ μ): no progressive slip over the second half of the run, against the elastic
+    // shear of the base m g sin θ / (ks A)
+    const double elastic = block_mass(scene, b) * g * std::sin(p.angle) / (scene.contact.ks * contact_area(scene));
+    const double drift = polyfit(r.measured, 1, 0.5 * T, T)[1] * 0.5 * T;
+    r.metrics.push_back(absolute("slip while held", "m", drift, 0.0, 0.05 * elastic,
+                                 "tan θ ≤ μ; linear drift over the second half of the run; 5 % of the elastic base "
+                                 "shear m g sin θ/(ks A) = " + std::to_string(elastic) + " m, as the stick case"));
+    return r;
+}
+
+}  // namespace
+
+// kind "incline": Coulomb's law holds for rigid contact
+const CaseKind& incline_kind() {
+    static const FunctionKind k("incline", {"angle"}, analyse_incline, incline_curve, rigid_contact_only,
+                                "slid half the reference distance");
+    return k;
+}
+
+}  // namespace cairn::cases

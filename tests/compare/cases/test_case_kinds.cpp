@@ -1,0 +1,203 @@
+// the table of reference kinds (compare/cases/case_kinds.cpp): it agrees with the loader's list
+// (core/scene/reference_kinds.cpp), and every kind measures a synthetic run whose answer is built
+// in here from numbers of docs/physics.md and the scenes, not from the kind's own curve
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <functional>
+#include <map>
+#include <set>
+
+#include "cases/case_kind.hpp"
+#include "scene/reference_kinds.hpp"
+#include "scene/scene_io.hpp"
+#include "support/scene_builder.hpp"
+#include "validation/plan.hpp"
+
+using namespace cairn;
+
+namespace {
+
+Scene shipped(const std::string& name) { return load_scene(std::string(CAIRN_SOURCE_DIR) + "/scenarios/" + name + ".toml"); }
+
+/// samples every dt to `duration`: every free block at rest where the scene puts it, except the
+/// reference block, moved by d(t) and turned by θ(t) about the world y axis through its centre;
+/// probes follow their blocks
+std::vector<Sample> synthetic_run(const Scene& s, double duration, double dt, const std::function<Vec3(double)>& d,
+                                  const std::function<double(double)>& theta) {
+    std::vector<Sample> out;
+    const int ref = s.reference->block;
+    const long n = std::lround(duration / dt);
+    for (long i = 0; i <= n; ++i) {
+        const double t = double(i) * dt;
+        const Quat turn(Eigen::AngleAxisd(theta(t), Vec3::UnitY()));
+        Sample x;
+        x.t = t;
+        for (size_t b = 0; b < s.blocks.size(); ++b) {
+            if (s.blocks[b].fixed) continue;
+            BlockState st;
+            st.position = s.blocks[b].position + (int(b) == ref ? d(t) : Vec3::Zero());
+            st.orientation = int(b) == ref ? turn * s.blocks[b].orientation : s.blocks[b].orientation;
+            x.blocks.push_back(st);
+        }
+        for (const auto& p : s.probes) {
+            const BlockDef& b = s.blocks[size_t(p.block)];
+            x.probes.push_back(p.block == ref ? Vec3(b.position + d(t) + turn * (b.orientation * p.point))
+                                              : Vec3(b.position + b.orientation * p.point));
+        }
+        out.push_back(x);
+    }
+    return out;
+}
+
+Vec3 still(double) { return Vec3::Zero(); }
+double upright(double) { return 0.0; }
+
+/// a block on a 30° plane with μ = 0.4 (the plane B turned about y tips +x downwards)
+Scene incline_scene() {
+    Scene s = test::stone_scene(0.4);
+    const double theta = 30.0 * M_PI / 180.0;
+    const Quat q(Eigen::AngleAxisd(theta, Vec3::UnitY()));
+    test::add_box(s, "B", Vec3(4.0, 1.0, 1.0), Vec3::Zero(), true, q);
+    const int a = test::add_box(s, "A", Vec3(0.5, 0.5, 0.5), q * Vec3(-1.2, 0, 0.75), false, q);
+    s.reference = ReferenceDef{"incline", a, {{"angle", theta}}};
+    return s;
+}
+
+/// one kind's synthetic check: a scene, a run built with a known answer, the metric that must
+/// measure it, and the verdict the built-in error gives
+struct Synthetic {
+    std::function<Scene()> scene;
+    std::function<std::vector<Sample>(const Scene&)> run;
+    cases::ContactKind contact;
+    std::string metric;
+    double value;          // what the metric must measure
+    double epsilon;        // relative, for the sampling of the built run
+    std::string verdict;
+};
+
+std::map<std::string, Synthetic> synthetic_checks() {
+    std::map<std::string, Synthetic> c;
+    // (a) mg/K = 2600·9.81/3e7 = 8.502e-4 m; a swing to 2d' with d' 0.5 % shallow: pass at 1 %
+    const double eq = 8.502e-4 * 0.995, period = 0.058493;
+    c["rest"] = {[] { return shipped("paper/stability"); },
+                 [=](const Scene& s) {
+                     return synthetic_run(s, 0.5, 1e-4, [=](double t) { return Vec3(0, 0, -eq * (1 - std::cos(2 * M_PI * t / period))); }, upright);
+                 },
+                 {true}, "equilibrium penetration", eq, 1e-3, "pass"};
+    // (b) first contact √(2h/g) = 0.142784 s for h = 0.1 m; built 0.5 % late: pass at 1 %
+    const double tc = 1.005 * 0.142784, gap = 0.1;
+    c["impact"] = {[] { return shipped("paper/impact"); },
+                   [=](const Scene& s) {
+                       const double fall = 2 * gap / (tc * tc);
+                       return synthetic_run(s, 0.3, 1e-5, [=](double t) {
+                           return Vec3(0, 0, t < tc ? -0.5 * fall * t * t : -gap - 0.01 * std::sin(M_PI * std::min(1.0, (t - tc) / 0.03)));
+                       }, upright);
+                   },
+                   {true}, "first contact", tc, 1e-5, "pass"};
+    // (c) slide at (H/W − μ) g = 0.981 m/s²; built 2 % fast: miss at 1 %
+    const double acc = 1.02 * 0.981;
+    c["slide"] = {[] { return shipped("paper/friction_slide"); },
+                  [=](const Scene& s) { return synthetic_run(s, 1.0, 1e-3, [=](double t) { return Vec3(0.5 * acc * t * t, 0, 0); }, upright); },
+                  {true}, "sliding acceleration", acc, 1e-9, "miss"};
+    // (c) stick: the Winkler block's base shear 4.0249e-4 m; built 2 % over, held: pass at 3 %
+    const double u = 1.02 * 4.0249e-4;
+    c["stick"] = {[] { return shipped("paper/friction_stick"); },
+                  [=](const Scene& s) {
+                      const double ramp = s.loads.at(0).ramp + s.loads.at(0).start;
+                      return synthetic_run(s, s.run.duration, 1e-3, [=](double t) { return Vec3(t < ramp ? u * t / ramp : u, 0, 0); }, upright);
+                  },
+                  {true}, "base shear displacement", u, 1e-9, "pass"};
+    // incline 30°, μ = 0.4: g (sin 30° − 0.4 cos 30°) = 1.50672 m/s²; built 0.5 % slow: pass at 1 %
+    const double a_in = 0.995 * 1.50672;
+    c["incline"] = {incline_scene,
+                    [=](const Scene& s) {
+                        const Vec3 down = Quat(Eigen::AngleAxisd(30.0 * M_PI / 180.0, Vec3::UnitY())) * Vec3::UnitX();
+                        return synthetic_run(s, 1.0, 1e-3, [=](double t) { return Vec3(0.5 * a_in * t * t * down); }, upright);
+                    },
+                    {false}, "sliding acceleration", a_in, 1e-9, "pass"};
+    // (d) two quarter turns while on the slope: two faces crossed (at least one is the bound)
+    c["rolling"] = {[] { return shipped("paper/rolling"); },
+                    [](const Scene& s) { return synthetic_run(s, 2.0, 1e-3, still, [](double t) { return -0.55 * M_PI * t; }); },
+                    {false}, "faces crossed on the slope", 2.0, 0.0, "pass"};
+    // (e) reading B, θ0 = 30°: Housner's exact first impact 0.76160 s; built 0.5 % late: pass at 1 %
+    const double t1 = 1.005 * 0.76160;
+    c["housner"] = {[] { return shipped("paper/rocking"); },
+                    [=](const Scene& s) {
+                        const double th0 = s.reference->values.at("theta0");
+                        return synthetic_run(s, 2.0, 1e-4, still, [=](double t) {
+                            // the scene starts A tilted by θ0: the built angle is relative to that
+                            return (t < t1 ? th0 * std::cos(0.5 * M_PI * t / t1) : -0.08 * std::sin(M_PI * (t - t1) / 0.6)) - th0;
+                        });
+                    },
+                    // 2e-4: the crossing is interpolated across the kink at t1, within one 1e-4 s sample
+                    {false}, "first impact", t1, 2e-4, "pass"};
+    // the column turns past 0.05 rad at 20 s, when its ramp (0.20 g at 2 s to 0.30 g at 42 s)
+    // is at 0.20 + 0.10·18/40 = 0.245 g
+    c["pushover"] = {[] { return shipped("structures/column_pushover"); },
+                     [](const Scene& s) { return synthetic_run(s, 25.0, 1e-2, still, [](double t) { return 0.05 * (t / 20.0) * (t / 20.0); }); },
+                     {true}, "a/g when the top turns 0.0500 rad", 0.245, 1e-4, ""};
+    // the thin arch's crown falls by twice its thickness 0.199077 m: collapsed
+    c["arch"] = {[] { return shipped("structures/arch_thin"); },
+                 [](const Scene& s) { return synthetic_run(s, 2.0, 1e-2, [](double t) { return Vec3(0, 0, -2 * 0.199077 * t / 2.0); }, upright); },
+                 {true}, "crown settlement", 2 * 0.199077, 1e-9, "pass"};
+    return c;
+}
+
+}  // namespace
+
+TEST_CASE("the table of reference kinds is the loader's list, with the same parameters", "[cases]") {
+    std::set<std::string> names;
+    for (const cases::CaseKind* k : cases::case_kinds()) {
+        INFO("kind " << k->name());
+        CHECK(names.insert(k->name()).second);
+        const ReferenceKind* loaded = find_reference_kind(k->name());
+        REQUIRE(loaded);
+        CHECK(loaded->parameters == k->parameters());
+        CHECK_FALSE(k->event_label().empty());
+    }
+    for (const auto& k : reference_kinds()) {
+        INFO("loader kind " << k.name);
+        CHECK(names.count(k.name) == 1);
+    }
+    CHECK_THROWS_WITH(cases::case_kind("nonsense", "x.toml"), Catch::Contains("x.toml") && Catch::Contains("nonsense"));
+}
+
+TEST_CASE("every reference kind measures a synthetic run of known answer", "[cases]") {
+    const auto checks = synthetic_checks();
+    for (const cases::CaseKind* k : cases::case_kinds()) {
+        INFO("kind " << k->name());
+        const auto it = checks.find(k->name());
+        REQUIRE(it != checks.end());   // a new kind needs its synthetic check here
+        const Synthetic& c = it->second;
+        const Scene s = c.scene();
+        REQUIRE(s.reference);
+        REQUIRE(s.reference->kind == k->name());
+        const auto run = c.run(s);
+        const auto a = k->analyse(s, run, c.contact);
+        const metrics::Metric* m = nullptr;
+        for (const auto& x : a.metrics)
+            if (x.name == c.metric) m = &x;
+        REQUIRE(m);
+        CHECK(m->value == Approx(c.value).epsilon(c.epsilon));
+        if (!c.verdict.empty()) CHECK(std::string(m->verdict()) == c.verdict);
+        // analyse_case dispatches to the same kind
+        CHECK(cases::analyse_case(s, run, c.contact).metrics.size() == a.metrics.size());
+        // every kind can judge some engine: its contact modes name real modes
+        const auto modes = k->contact_modes(s);
+        CHECK_FALSE(modes.empty());
+        for (const auto& mode : modes) CHECK((mode == "rigid" || mode == "matched"));
+        const auto variants = validation::variants_for(s, {"dem", "bullet"});
+        CHECK(variants.size() == 2 + modes.size());
+    }
+}
+
+TEST_CASE("a scene whose reference kind has no CaseKind is refused, not run on dem alone", "[cases]") {
+    Scene s = test::stone_scene();
+    const int a = test::add_box(s, "A", Vec3(0.5, 0.5, 0.5), Vec3(0, 0, 0.25), false);
+    s.source = "made_up.toml";
+    s.reference = ReferenceDef{"made_up", a, {}};
+    CHECK_THROWS_WITH(validation::variants_for(s, {"dem", "bullet"}), Catch::Contains("made_up.toml"));
+    CHECK_THROWS_WITH(cases::analyse_case(s, synthetic_run(s, 0.01, 1e-3, still, upright), {true}),
+                      Catch::Contains("made_up"));
+}
