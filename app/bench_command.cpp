@@ -1,5 +1,5 @@
-// `cairn bench trade | stability | wall | all`: speed against accuracy, stability at the extremes,
-// throughput side by side (docs/bench.md)
+// `cairn bench trade | stability | wall | scale | all`: speed against accuracy, stability at the
+// extremes, throughput side by side, cost per simulated second against model size (docs/bench.md)
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
@@ -7,6 +7,7 @@
 #include <iostream>
 
 #include "bench/bench_report.hpp"
+#include "bench/scale_bench.hpp"
 #include "bench/stability.hpp"
 #include "bench/trade_sweep.hpp"
 #include "bench/wall_bench.hpp"
@@ -97,9 +98,40 @@ int wall(const BenchOptions& o, const std::string& dir) {
     write_text_atomic((fs::path(dir) / "wall.csv").string(), bench::wall_csv(rows));
     bench::write_bench_report(dir);
     for (const auto& r : rows)
-        std::printf("wall [%s] %-7s %8.1f steps/s  x%.2f of Bullet  %s\n", r.setup.c_str(), r.backend.c_str(),
+        std::printf("wall [%s] %-7s %8.1f steps/s  x%.2f of Bullet's steps/s at the same dt  %s\n", r.setup.c_str(), r.backend.c_str(),
                     r.steps_per_second, r.ratio_to_bullet, r.status.substr(0, 60).c_str());
     std::printf("wall: %s/wall.csv; %.1f s wall\n", o.out_dir.c_str(), seconds_since(t0));
+    return kExitOk;
+}
+
+/// writes into `dir` (the staging directory of o.out_dir)
+int scale(const BenchOptions& o, const std::string& dir) {
+    const auto t0 = std::chrono::steady_clock::now();
+    std::vector<std::string> backends;
+    try {
+        backends = chosen_backends(o.backends);
+    } catch (const Error& e) {
+        std::cerr << "error: " << e.what() << "\n";
+        return kExitBadInput;
+    }
+    // the accuracy first: each backend's largest dt that settles a wall within 1 %
+    const auto acc = bench::scale_accuracy(backends, {1e-3, 3e-4, 1e-4, 3e-5, 1e-5}, 0.01, make, o.quiet);
+    std::vector<double> dts;
+    for (const auto& b : backends) dts.push_back(bench::reaching_dt(acc, b, 0.01));
+    const auto rows = bench::run_scale(backends, dts, o.scale_sizes, o.scale_steps, make, o.quiet);
+    write_text_atomic((fs::path(dir) / "scale_accuracy.csv").string(), bench::scale_accuracy_csv(acc));
+    write_text_atomic((fs::path(dir) / "scale.csv").string(), bench::scale_csv(rows));
+    bench::write_bench_report(dir);
+    for (const auto& b : backends) {
+        std::vector<double> n, cost;
+        for (const auto& r : rows)
+            if (r.backend == b && r.status == "completed") n.push_back(r.blocks), cost.push_back(r.cost);
+        std::printf("scale %-7s dt %-7g", b.c_str(), dts[size_t(&b - backends.data())]);
+        for (const auto& r : rows)
+            if (r.backend == b) std::printf("  N %d: %.3g s/s %.0f MB", r.blocks, r.cost, r.peak_mb);
+        std::printf("  cost ~ N^%.2f\n", bench::fitted_exponent(n, cost));
+    }
+    std::printf("scale: %s/scale.csv; %.1f s wall\n", o.out_dir.c_str(), seconds_since(t0));
     return kExitOk;
 }
 
@@ -121,6 +153,7 @@ int bench_command(const std::string& which, const BenchOptions& o) {
     if (which == "trade") benches = {&trade};
     else if (which == "stability") benches = {&stability};
     else if (which == "wall") benches = {&wall};
+    else if (which == "scale") benches = {&scale};
     else benches = {&wall, &trade, &stability};   // all: the wall first, on an otherwise idle machine
     for (auto* f : benches) {
         const int code = f(o, dir);

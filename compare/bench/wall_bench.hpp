@@ -1,6 +1,7 @@
 #pragma once
 /// The side-by-side throughput of the backends on a running-bond brick wall at the same time step
-/// (issue 7, "performance of the in-house engine"): steps per second and the ratio to Bullet.
+/// (the performance of the in-house engine): steps per second and their ratio to Bullet's at
+/// the same dt (a cost per step; `cairn bench scale` compares cost at equal accuracy).
 
 #include <functional>
 #include <memory>
@@ -35,7 +36,8 @@ struct WallResult {
     int blocks = 0;                        ///< free blocks
     int steps = 0;                         ///< steps per repeat
     double steps_per_second = 0.0;         ///< median over the repeats
-    double ratio_to_bullet = 0.0;          ///< steps/s over Bullet's on the same setup (0: no Bullet)
+    double ratio_to_bullet = 0.0;          ///< steps/s over Bullet's at the same dt (0: no Bullet): a cost
+                                           ///< per step, not per simulated second at equal accuracy
     double top_settlement = 0.0;           ///< largest displacement of a top-course brick at the end, m
     std::string status;                    ///< "completed", "unstable: ...", "refused: ..."
 };
