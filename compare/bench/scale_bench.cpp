@@ -47,7 +47,7 @@ std::string step_for(Backend& b, long long steps, double& seconds) {
 }  // namespace
 
 std::array<int, 2> scale_wall_shape(int n) {
-    const int per = std::max(1, int(std::ceil(std::sqrt(2.0 * n))));
+    const int per = std::max(1, int(std::ceil(std::sqrt(0.5 * n))));
     return {std::max(1, (n + per - 1) / per), per};
 }
 

@@ -13,8 +13,8 @@
 
 namespace cairn::bench {
 
-/// courses and bricks per course of the scale walls: the nearest to a square of about n bricks
-/// of 0.4 × 0.2 m faces (per course = ⌈√(2n)⌉, courses = ⌈n / per course⌉), count
+/// courses and bricks per course of the scale walls: about n bricks of 0.4 × 0.2 m faces in a
+/// nearly square wall (per course = ⌈√(n/2)⌉, courses = ⌈n / per course⌉), count
 std::array<int, 2> scale_wall_shape(int n);
 
 /// the static settlement of the top course of a running-bond wall of `courses` courses of
