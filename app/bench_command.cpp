@@ -36,6 +36,17 @@ std::vector<std::string> chosen_backends(const std::vector<std::string>& asked) 
 
 std::unique_ptr<Backend> make(const std::string& name) { return make_backend(name); }
 
+// the asked backends into `out`; false (the error printed) for an unknown name
+bool backends_or_error(const BenchOptions& o, std::vector<std::string>& out) {
+    try {
+        out = chosen_backends(o.backends);
+        return true;
+    } catch (const Error& e) {
+        std::cerr << "error: " << e.what() << "\n";
+        return false;
+    }
+}
+
 double seconds_since(std::chrono::steady_clock::time_point t0) {
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 }
@@ -88,12 +99,7 @@ int stability(const BenchOptions& o, const std::string& dir) {
 int wall(const BenchOptions& o, const std::string& dir) {
     const auto t0 = std::chrono::steady_clock::now();
     std::vector<std::string> backends;
-    try {
-        backends = chosen_backends(o.backends);
-    } catch (const Error& e) {
-        std::cerr << "error: " << e.what() << "\n";
-        return kExitBadInput;
-    }
+    if (!backends_or_error(o, backends)) return kExitBadInput;
     const auto rows = bench::run_wall(backends, bench::wall_setups(), o.courses, 10, o.wall_steps, o.repeats, make,
                                       o.quiet);
     write_text_atomic((fs::path(dir) / "wall.csv").string(), bench::wall_csv(rows));
@@ -109,12 +115,7 @@ int wall(const BenchOptions& o, const std::string& dir) {
 int scale(const BenchOptions& o, const std::string& dir) {
     const auto t0 = std::chrono::steady_clock::now();
     std::vector<std::string> backends;
-    try {
-        backends = chosen_backends(o.backends);
-    } catch (const Error& e) {
-        std::cerr << "error: " << e.what() << "\n";
-        return kExitBadInput;
-    }
+    if (!backends_or_error(o, backends)) return kExitBadInput;
     // the accuracy first: each backend's largest dt that settles a wall within 1 %
     const auto acc = bench::scale_accuracy(backends, {1e-3, 3e-4, 1e-4, 3e-5}, 0.01, make, o.quiet);
     // a backend that misses 1 % at every dt is timed at its largest completed one, and says so

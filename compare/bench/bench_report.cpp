@@ -18,18 +18,9 @@ namespace cairn::bench {
 
 namespace {
 
-std::string fmt(const char* f, double v) {
-    char b[64];
-    std::snprintf(b, sizeof b, f, v);
-    return b;
-}
+std::string fmt(const char* f, double v) { return number_format(f, v); }
 
-std::string slurp(const fs::path& p) {
-    std::ifstream in(p);
-    std::stringstream ss;
-    ss << in.rdbuf();
-    return ss.str();
-}
+std::string slurp(const fs::path& p) { return read_whole(p.string()); }
 
 std::vector<std::string> variants_of(const std::vector<TradePoint>& pts, const std::string& c) {
     std::vector<std::string> v;
@@ -203,6 +194,19 @@ report::Document bench_document(const std::string& dir) {
     }
     if (!note.empty()) d.paragraph("Figures: " + note);
     return d;
+}
+
+std::string number_format(const char* format, double v) {
+    char b[64];
+    std::snprintf(b, sizeof b, format, v);
+    return b;
+}
+
+std::string read_whole(const std::string& path) {
+    std::ifstream in(path);
+    std::stringstream ss;
+    ss << in.rdbuf();
+    return ss.str();
 }
 
 void write_bench_report(const std::string& dir) {

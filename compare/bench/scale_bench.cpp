@@ -159,16 +159,11 @@ std::string scale_csv(const std::vector<ScaleRow>& rows) {
 
 std::vector<ScaleRow> parse_scale_csv(const std::string& text) {
     std::vector<ScaleRow> out;
-    std::istringstream in(text);
-    std::string line;
-    std::getline(in, line);
-    auto num = [](const std::string& s) { return s.empty() ? NAN : std::strtod(s.c_str(), nullptr); };
-    while (std::getline(in, line)) {
-        const auto f = report::split_csv_line(line);
-        if (f.size() != 8) continue;
+    const auto num = csv_number;
+    for_each_csv_row(text, 8, [&](const std::vector<std::string>& f) {
         out.push_back({f[0], std::atoi(f[1].c_str()), num(f[2]), std::atoi(f[3].c_str()), num(f[4]), num(f[5]),
                        num(f[6]), f[7]});
-    }
+    });
     return out;
 }
 
@@ -184,15 +179,10 @@ std::string scale_accuracy_csv(const std::vector<ScaleAccuracy>& rows) {
 
 std::vector<ScaleAccuracy> parse_scale_accuracy_csv(const std::string& text) {
     std::vector<ScaleAccuracy> out;
-    std::istringstream in(text);
-    std::string line;
-    std::getline(in, line);
-    auto num = [](const std::string& s) { return s.empty() ? NAN : std::strtod(s.c_str(), nullptr); };
-    while (std::getline(in, line)) {
-        const auto f = report::split_csv_line(line);
-        if (f.size() != 6) continue;
+    const auto num = csv_number;
+    for_each_csv_row(text, 6, [&](const std::vector<std::string>& f) {
         out.push_back({f[0], num(f[1]), num(f[2]), num(f[3]), num(f[4]), f[5]});
-    }
+    });
     return out;
 }
 

@@ -7,6 +7,7 @@
 #include <fstream>
 #include <sstream>
 
+#include "bench/bench_report.hpp"
 #include "bench/scale_bench.hpp"
 #include "output/atomic_write.hpp"
 #include "report/gnuplot.hpp"
@@ -17,18 +18,9 @@ namespace cairn::bench {
 
 namespace {
 
-std::string fmt(const char* f, double v) {
-    char b[64];
-    std::snprintf(b, sizeof b, f, v);
-    return b;
-}
+std::string fmt(const char* f, double v) { return number_format(f, v); }
 
-std::string slurp(const fs::path& p) {
-    std::ifstream in(p);
-    std::stringstream ss;
-    ss << in.rdbuf();
-    return ss.str();
-}
+std::string slurp(const fs::path& p) { return read_whole(p.string()); }
 
 // figures/scale_cost.png: cost per simulated second against bricks, log-log, one line per backend
 std::string cost_figure(const std::string& dir, const std::vector<ScaleRow>& rows,

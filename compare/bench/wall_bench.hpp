@@ -48,6 +48,12 @@ std::vector<WallResult> run_wall(const std::vector<std::string>& backends, const
                                  const std::function<std::unique_ptr<Backend>(const std::string&)>& make,
                                  bool quiet);
 
+/// call `row` with the fields of every line after the header of a csv text that has `fields` of them
+void for_each_csv_row(const std::string& text, size_t fields,
+                      const std::function<void(const std::vector<std::string>&)>& row);
+/// a csv number field (empty: NaN)
+double csv_number(const std::string& field);
+
 /// wall.csv text, and its parse
 std::string wall_csv(const std::vector<WallResult>& rows);
 std::vector<WallResult> parse_wall_csv(const std::string& text);
