@@ -1,12 +1,14 @@
-// `cairn bench trade | stability | wall | all`: speed against accuracy, stability at the extremes,
-// throughput side by side (docs/bench.md)
+// `cairn bench trade | stability | wall | scale | all`: speed against accuracy, stability at the
+// extremes, throughput side by side, cost per simulated second against model size (docs/bench.md)
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
 
 #include "bench/bench_report.hpp"
+#include "bench/scale_bench.hpp"
 #include "bench/stability.hpp"
 #include "bench/trade_sweep.hpp"
 #include "bench/wall_bench.hpp"
@@ -33,6 +35,17 @@ std::vector<std::string> chosen_backends(const std::vector<std::string>& asked) 
 }
 
 std::unique_ptr<Backend> make(const std::string& name) { return make_backend(name); }
+
+// the asked backends into `out`; false (the error printed) for an unknown name
+bool backends_or_error(const BenchOptions& o, std::vector<std::string>& out) {
+    try {
+        out = chosen_backends(o.backends);
+        return true;
+    } catch (const Error& e) {
+        std::cerr << "error: " << e.what() << "\n";
+        return false;
+    }
+}
 
 double seconds_since(std::chrono::steady_clock::time_point t0) {
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
@@ -86,20 +99,51 @@ int stability(const BenchOptions& o, const std::string& dir) {
 int wall(const BenchOptions& o, const std::string& dir) {
     const auto t0 = std::chrono::steady_clock::now();
     std::vector<std::string> backends;
-    try {
-        backends = chosen_backends(o.backends);
-    } catch (const Error& e) {
-        std::cerr << "error: " << e.what() << "\n";
-        return kExitBadInput;
-    }
+    if (!backends_or_error(o, backends)) return kExitBadInput;
     const auto rows = bench::run_wall(backends, bench::wall_setups(), o.courses, 10, o.wall_steps, o.repeats, make,
                                       o.quiet);
     write_text_atomic((fs::path(dir) / "wall.csv").string(), bench::wall_csv(rows));
     bench::write_bench_report(dir);
     for (const auto& r : rows)
-        std::printf("wall [%s] %-7s %8.1f steps/s  x%.2f of Bullet  %s\n", r.setup.c_str(), r.backend.c_str(),
+        std::printf("wall [%s] %-7s %8.1f steps/s  x%.2f of Bullet's steps/s at the same dt  %s\n", r.setup.c_str(), r.backend.c_str(),
                     r.steps_per_second, r.ratio_to_bullet, r.status.substr(0, 60).c_str());
     std::printf("wall: %s/wall.csv; %.1f s wall\n", o.out_dir.c_str(), seconds_since(t0));
+    return kExitOk;
+}
+
+/// writes into `dir` (the staging directory of o.out_dir)
+int scale(const BenchOptions& o, const std::string& dir) {
+    const auto t0 = std::chrono::steady_clock::now();
+    std::vector<std::string> backends;
+    if (!backends_or_error(o, backends)) return kExitBadInput;
+    // the accuracy first: each backend's largest dt that settles a wall within 1 %
+    const auto acc = bench::scale_accuracy(backends, {1e-3, 3e-4, 1e-4, 3e-5}, 0.01, make, o.quiet);
+    // a backend that misses 1 % at every dt is timed at its largest completed one, and says so
+    std::vector<double> dts;
+    std::vector<bool> missed;
+    for (const auto& b : backends) {
+        const double dt = bench::reaching_dt(acc, b, 0.01);
+        missed.push_back(!(dt > 0.0));
+        dts.push_back(dt > 0.0 ? dt : bench::reaching_dt(acc, b, HUGE_VAL));
+    }
+    auto rows = bench::run_scale(backends, dts, o.scale_sizes, o.scale_steps, make, o.quiet);
+    for (auto& r : rows)
+        for (size_t i = 0; i < backends.size(); ++i)
+            if (r.backend == backends[i] && missed[i] && r.status == "completed")
+                r.status = "completed; no dt tried settles within 1 % (scale_accuracy.csv)";
+    write_text_atomic((fs::path(dir) / "scale_accuracy.csv").string(), bench::scale_accuracy_csv(acc));
+    write_text_atomic((fs::path(dir) / "scale.csv").string(), bench::scale_csv(rows));
+    bench::write_bench_report(dir);
+    for (const auto& b : backends) {
+        std::vector<double> n, cost;
+        for (const auto& r : rows)
+            if (r.backend == b && r.status.rfind("completed", 0) == 0) n.push_back(r.blocks), cost.push_back(r.cost);
+        std::printf("scale %-7s dt %-7g", b.c_str(), dts[size_t(&b - backends.data())]);
+        for (const auto& r : rows)
+            if (r.backend == b) std::printf("  N %d: %.3g s/s %.0f MB", r.blocks, r.cost, r.peak_mb);
+        std::printf("  cost ~ N^%.2f\n", bench::fitted_exponent(n, cost));
+    }
+    std::printf("scale: %s/scale.csv; %.1f s wall\n", o.out_dir.c_str(), seconds_since(t0));
     return kExitOk;
 }
 
@@ -121,6 +165,7 @@ int bench_command(const std::string& which, const BenchOptions& o) {
     if (which == "trade") benches = {&trade};
     else if (which == "stability") benches = {&stability};
     else if (which == "wall") benches = {&wall};
+    else if (which == "scale") benches = {&scale};
     else benches = {&wall, &trade, &stability};   // all: the wall first, on an otherwise idle machine
     for (auto* f : benches) {
         const int code = f(o, dir);

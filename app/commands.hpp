@@ -127,10 +127,12 @@ struct BenchOptions {
     long long long_steps = 1000000;      ///< stability: steps of the long resting run
     int courses = 30;                    ///< wall: courses of 10 bricks
     int wall_steps = 200;                ///< wall: steps per repeat
+    std::vector<int> scale_sizes{1000, 3000, 10000};   ///< scale: bricks per wall, count
+    int scale_steps = 5;                 ///< scale: steps timed per wall and backend
     bool quiet = false;                  ///< no progress lines
 };
 
-/// `cairn bench trade|stability|wall|all`
+/// `cairn bench trade|stability|wall|scale|all`
 int bench_command(const std::string& which, const BenchOptions& options);
 
 /// Options of `cairn replay`.

@@ -107,7 +107,7 @@ int main(int argc, char** argv) {
     BenchOptions bench;
     auto* bench_cmd = app.add_subcommand("bench", "speed against accuracy, stability, throughput (docs/bench.md)");
     bench_cmd->require_subcommand(1);
-    for (const char* which : {"trade", "stability", "wall", "all"}) {
+    for (const char* which : {"trade", "stability", "wall", "scale", "all"}) {
         auto* sub = bench_cmd->add_subcommand(which, std::string("cairn bench ") + which);
         sub->add_option("--out,-o", bench.out_dir, "output directory (default out/bench)");
         sub->add_option("--backends", bench.backends, "comma-separated backend names")->delimiter(',');
@@ -124,6 +124,12 @@ int main(int argc, char** argv) {
         if (std::string(which) == "wall" || std::string(which) == "all") {
             sub->add_option("--courses", bench.courses, "courses of 10 bricks (default 30)")->check(CLI::Range(1, 200));
             sub->add_option("--steps", bench.wall_steps, "steps per repeat (default 200)")->check(CLI::Range(1, 100000));
+        }
+        if (std::string(which) == "scale") {
+            sub->add_option("--sizes", bench.scale_sizes, "bricks per wall (default 1000,3000,10000)")
+                ->delimiter(',')
+                ->check(CLI::Range(10, 20000));
+            sub->add_option("--steps", bench.scale_steps, "steps timed per wall (default 5)")->check(CLI::Range(1, 10000));
         }
     }
 

@@ -100,12 +100,13 @@ void whole_step_free(benchmark::State& state) { steps(state, false); }
 
 // steps of the 300-brick running-bond wall of `cairn bench wall` (30 courses of 10 bricks of
 // 0.4 × 0.2 × 0.2 m at kn = 3e9 N/m³, each course at its static penetration, dt = 1e-4 s), with
-// the paper's grid (scheme 0, its default 0.1 m spacing) or the overlap scheme (1, its default
-// sub-division): the cost of contact at the same kn
+// the paper's grid (sub 0: its default 0.1 m spacing) or the overlap scheme with sub×sub
+// sub-contacts per hitting face: the cost of contact at the same kn
 void wall_step(benchmark::State& state) {
     set_threads(int(state.range(1)));
     Scene s = bench::wall_scene(30, 10, bench::wall_setups()[1]);
     s.contact.scheme = state.range(0) == 0 ? ContactScheme::paper : ContactScheme::overlap;
+    if (state.range(0) > 0) s.contact.subdivision = int(state.range(0));
     auto backend = dem_backend_info().make();
     backend->build(s, RunOptions{});
     for (auto _ : state) benchmark::DoNotOptimize(backend->step());
@@ -125,5 +126,5 @@ BENCHMARK(internal_force_distorted)->Apply(meshes);
 BENCHMARK(internal_force_damped)->Apply(meshes);
 BENCHMARK(whole_step)->Apply(meshes);
 BENCHMARK(whole_step_free)->Apply(meshes);
-BENCHMARK(wall_step)->ArgsProduct({{0, 1}, {1, 2}})->ArgNames({"scheme", "threads"})->UseRealTime();
+BENCHMARK(wall_step)->ArgsProduct({{0, 1, 2, 4}, {1, 2}})->ArgNames({"sub", "threads"})->UseRealTime();
 BENCHMARK_MAIN();

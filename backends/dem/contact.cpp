@@ -32,7 +32,7 @@ void ContactSet::refresh(std::vector<Block>& blocks) {
         blocks[i].x_at_refresh = blocks[i].body.x;
         blocks[i].q_at_refresh = blocks[i].body.q;
     }
-    overlapping_pairs(boxes_, order_, pairs_);
+    broad_.overlapping_pairs(boxes_, pairs_);
     for (auto [i, j] : pairs_) {
         if (blocks[i].fixed && blocks[j].fixed) continue;
         for (auto [h, t] : {std::pair<int, int>{i, j}, std::pair<int, int>{j, i}}) {

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "block.hpp"
+#include "broad_phase.hpp"
 #include "contact_pair.hpp"
 #include "scene/scene.hpp"
 
@@ -106,7 +107,7 @@ private:
     // buffers kept between refreshes so that a steady state allocates nothing
     std::vector<Candidate> previous_;
     std::vector<Aabb> boxes_;
-    std::vector<int> order_;
+    BroadPhase broad_;
     std::vector<std::pair<int, int>> pairs_;
 };
 

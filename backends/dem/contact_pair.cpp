@@ -47,8 +47,9 @@ bool is_target_given(const std::vector<Block>& blocks, int h, int hit_side, int 
     // sign when the two swap; its first component along z, x, y of at least half its length
     // decides (the lower block of a stack is the target; side by side, the one on the −x side)
     const Vec3 m = nt - nh;
+    const double half = 0.5 * m.norm();
     for (int axis : {2, 0, 1})
-        if (std::abs(m[axis]) >= 0.5 * m.norm()) return m[axis] > 0.0;
+        if (std::abs(m[axis]) >= half) return m[axis] > 0.0;
     return t < h;   // unreachable: some component of a vector is at least 1/√3 of its length
 }
 
@@ -78,17 +79,20 @@ void PairGeometry::set(const std::vector<Block>& blocks, const std::vector<SideF
     centre = frames[t].centre;
     const std::array<Vec3, 6>& hn = frames[h].normal;
     for (int s = 0; s < 6; ++s) {
+        std::array<double, 6> d;
         double best = 0.0;
         best_side[s] = -1;
         for (int f = 0; f < 6; ++f) {
-            const double d = hn[f].dot(normal[s]);
-            if (d < best) best = d, best_side[s] = f;
+            d[size_t(f)] = hn[f].dot(normal[s]);
+            if (d[size_t(f)] < best) best = d[size_t(f)], best_side[s] = f;
         }
         target_ok[s] = best_side[s] >= 0 && is_target_given(blocks, h, best_side[s], t, s, hn[best_side[s]], normal[s]);
         // a side within 1e-3 rad of perpendicular casts a shadow under 1e-3 of its height: left
-        // out, so that rounding never makes a side standing on the target a hitting side
+        // out, so that rounding never makes a side standing on the target a hitting side (the
+        // best side's rule is the one just found)
         for (int f = 0; f < 6; ++f)
-            faces[f][s] = hn[f].dot(normal[s]) < -1e-3 && is_target_given(blocks, h, f, t, s, hn[f], normal[s]);
+            faces[f][s] = d[size_t(f)] < -1e-3 &&
+                          (f == best_side[s] ? bool(target_ok[s]) : is_target_given(blocks, h, f, t, s, hn[f], normal[s]));
     }
     // a hitting point up to 1e-4 of the edge outside a side plane still counts as over the
     // target side: flush edges (stacked blocks) stay in contact as they bulge

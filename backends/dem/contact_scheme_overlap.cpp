@@ -51,14 +51,30 @@ void ContactSet::evaluate_overlap(std::vector<Block>& blocks, double dt, long be
         if (g.faces_any(hit_side)) {
             const Quad hq = hb.face_quad(c.hit_face);
             Aabb hbox;
-            for (const auto& p : hq) hbox.add(p);
-            hbox.inflate(tb.min_edge);   // a face may lie deep behind the target side
             for (int j = 0; j <= n; ++j)
                 for (int i = 0; i <= n; ++i) grid[j * (n + 1) + i] = quad_point(hq, Vec2(-1.0 + 2.0 * i / n, -1.0 + 2.0 * j / n));
             const auto [cn_area, ct_area] = dashpot_per_area(law_, hb, tb, hit_side);
+            bool ready = false;   // the box: laid at the first side not missed
             for (int s = 0; s < 6; ++s) {
                 if (!g.faces[hit_side][s]) continue;
+                // the face lies in the hull of its corners: a constraint none of them meets rules
+                // out every sub-cell at once (most candidate faces stop here), the side's own
+                // constraints first, then each target face's
+                auto missed_by = [&](const Affine* k0, const Affine* k1) {
+                    for (const Affine* k = k0; k != k1; ++k) {
+                        bool none = true;
+                        for (const auto& p : hq) none = none && (*k)(p) < 0.0;
+                        if (none) return true;
+                    }
+                    return false;
+                };
                 const int side_count = side_constraints(g, s, hit_side, cons);
+                if (missed_by(cons.data(), cons.data() + side_count)) continue;
+                if (!ready) {
+                    ready = true;
+                    for (const auto& p : hq) hbox.add(p);
+                    hbox.inflate(tb.min_edge);   // a face may lie deep behind the target side
+                }
                 for (int tf : tb.mesh.side_grid[s]) {
                     const Quad tq = tb.face_quad(tf);
                     Aabb tbox;
@@ -76,15 +92,7 @@ void ContactSet::evaluate_overlap(std::vector<Block>& blocks, double dt, long be
                         const Vec3 a = nt.cross(flat[(i + 1) % 4] - flat[i]).normalized();
                         cons[nc++] = Affine{a, -a.dot(flat[i])};
                     }
-                    // the face lies in the hull of its corners: a constraint none of them meets
-                    // rules out every sub-cell at once (most candidate faces stop here)
-                    bool missed = false;
-                    for (int k = 0; k < nc && !missed; ++k) {
-                        bool none = true;
-                        for (const auto& p : hq) none = none && cons[k](p) < 0.0;
-                        missed = none;
-                    }
-                    if (missed) continue;
+                    if (missed_by(cons.data() + side_count, cons.data() + nc)) continue;
                     for (int v = 0; v < n; ++v)
                         for (int u = 0; u < n; ++u) {
                             ClipPolygon poly;

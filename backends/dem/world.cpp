@@ -6,6 +6,13 @@
 
 namespace cairn::dem {
 
+namespace {
+
+// below this many blocks a parallel region over the blocks costs more than it saves
+constexpr long kParallelBlocks = 256;
+
+}  // namespace
+
 World::World(const Scene& scene, double margin) : scene_(scene) {
     for (const auto& def : scene.blocks) blocks_.push_back(make_block(def, scene));
     for (const auto& p : scene.probes) probes_.push_back(locate(blocks_[p.block], p.block, p.point));
@@ -14,6 +21,7 @@ World::World(const Scene& scene, double margin) : scene_(scene) {
     contacts_.refresh(blocks_);
     force_.assign(blocks_.size(), Vec3::Zero());
     torque_.assign(blocks_.size(), Vec3::Zero());
+    loss_.assign(blocks_.size(), 0.0);
     accel_.resize(blocks_.size());
     for (size_t i = 0; i < blocks_.size(); ++i)
         if (blocks_[i].deformable) accel_[i].assign(blocks_[i].x.size(), Vec3::Zero());
@@ -95,12 +103,18 @@ void World::refresh_if_due() {
             for (const auto& vn : b.v) v = std::max(v, vn.norm());
             return v;
         };
-        for (const auto& b : blocks_)
-            if (!b.fixed && b.motion_since_refresh() + speed(b) * dt_ > 0.5 * contacts_.margin()) {
-                due = true;
-                ++early_refreshes_;
-                break;
-            }
+        const long count = long(blocks_.size());
+        const double half = 0.5 * contacts_.margin();
+        bool early = false;
+#pragma omp parallel for schedule(static) reduction(|| : early) if (count >= kParallelBlocks)
+        for (long i = 0; i < count; ++i) {
+            const Block& b = blocks_[size_t(i)];
+            if (!b.fixed && b.motion_since_refresh() + speed(b) * dt_ > half) early = true;
+        }
+        if (early) {
+            due = true;
+            ++early_refreshes_;
+        }
     }
     if (!due) return;
     contacts_.refresh(blocks_);
@@ -110,21 +124,31 @@ void World::refresh_if_due() {
 // stage: half-step velocity update from the current forces, mass damping α implicit
 void World::kick(double h) {
     const double alpha = scene_.damping.alpha, damp = 1.0 / (1.0 + alpha * h);
+    const long count = long(blocks_.size());
+    // rigid blocks on every core, each loss kept per block; deformable blocks (parallel inside)
+    // one after the other; the losses summed in block order (same bits on any thread count)
+#pragma omp parallel for schedule(static) if (count >= kParallelBlocks)
+    for (long i = 0; i < count; ++i) {
+        Block& b = blocks_[size_t(i)];
+        if (b.fixed || b.deformable) continue;
+        loss_[size_t(i)] = dem::kick(b.body, force_[size_t(i)], torque_[size_t(i)], h, alpha);
+    }
     for (size_t i = 0; i < blocks_.size(); ++i) {
         Block& b = blocks_[i];
-        if (b.fixed) continue;
-        if (!b.deformable) {
-            energy_.dissipated += dem::kick(b.body, force_[i], torque_[i], h, alpha);
-            continue;
-        }
+        if (b.fixed || !b.deformable) continue;
         for (size_t n = 0; n < b.v.size(); ++n) b.v[n] = (b.v[n] + h * accel_[i][n]) * damp;
-        if (alpha > 0.0) energy_.dissipated += mass_damping_loss(*b.deformable, b.x, b.v, accel_[i], h, alpha);
+        loss_[i] = alpha > 0.0 ? mass_damping_loss(*b.deformable, b.x, b.v, accel_[i], h, alpha) : 0.0;
     }
+    for (size_t i = 0; i < blocks_.size(); ++i)
+        if (!blocks_[i].fixed) energy_.dissipated += loss_[i];   // 0 when α = 0
 }
 
 // stage: move every free block over the step
 void World::drift() {
-    for (auto& b : blocks_) {
+    const long count = long(blocks_.size());
+#pragma omp parallel for schedule(static) if (count >= kParallelBlocks)
+    for (long i = 0; i < count; ++i) {
+        Block& b = blocks_[size_t(i)];
         if (b.fixed) continue;
         if (b.deformable)
             for (size_t n = 0; n < b.x.size(); ++n) b.x[n] += dt_ * b.v[n];
@@ -136,7 +160,17 @@ void World::drift() {
 // stage: nodes, then contact, gravity, loads and internal forces; rigid resultants or nodal
 // accelerations
 void World::compute_forces() {
+    const long count = long(blocks_.size());
+    // rigid nodes on every core; deformable blocks' poses one after the other (parallel inside)
+#pragma omp parallel for schedule(static) if (count >= kParallelBlocks)
+    for (long i = 0; i < count; ++i) {
+        Block& b = blocks_[size_t(i)];
+        if (b.deformable) continue;
+        b.update_nodes();
+        std::fill(b.f.begin(), b.f.end(), Vec3::Zero());
+    }
     for (auto& b : blocks_) {
+        if (!b.deformable) continue;
         b.update_nodes();
         std::fill(b.f.begin(), b.f.end(), Vec3::Zero());
     }
@@ -163,10 +197,22 @@ void World::compute_forces() {
         }
     }
     energy_.strain = 0.0;
+    // rigid resultants on every core (each block's own sums: no shared total)
+#pragma omp parallel for schedule(static) if (count >= kParallelBlocks)
+    for (long i = 0; i < count; ++i) {
+        Block& b = blocks_[size_t(i)];
+        if (b.fixed || b.deformable) continue;
+        force_[size_t(i)] = b.body.mass * scene_.gravity;
+        torque_[size_t(i)].setZero();
+        for (size_t n = 0; n < b.x.size(); ++n) {
+            force_[size_t(i)] += b.f[n];
+            torque_[size_t(i)] += (b.x[n] - b.body.x).cross(b.f[n]);
+        }
+    }
     for (size_t i = 0; i < blocks_.size(); ++i) {
         Block& b = blocks_[i];
-        if (b.fixed) continue;
-        if (b.deformable) {
+        if (b.fixed || !b.deformable) continue;
+        {
             const auto& m = b.deformable->lumped_mass();
             for (size_t n = 0; n < b.x.size(); ++n) b.f[n] += m[n] * scene_.gravity;
             energy_.strain += b.deformable->add_internal_forces(b.x, b.v, b.f);
@@ -174,13 +220,6 @@ void World::compute_forces() {
             energy_.dissipated += b.deformable->damping_power() * dt_;
             element_updates_ += (long long)b.deformable->element_count();
             b.deformable->accelerations(b.x, b.v, b.f, accel_[i]);
-            continue;
-        }
-        force_[i] = b.body.mass * scene_.gravity;
-        torque_[i].setZero();
-        for (size_t n = 0; n < b.x.size(); ++n) {
-            force_[i] += b.f[n];
-            torque_[i] += (b.x[n] - b.body.x).cross(b.f[n]);
         }
     }
 }

@@ -77,6 +77,7 @@ private:
     std::string inversion_;   // the first element inversion seen, kept until step() reports it
     ContactTotals last_contact_;
     std::vector<Vec3> force_, torque_;          // rigid blocks: resultant of the current step
+    std::vector<double> loss_;                  // per block: mass-damping loss of the last kick, J
     std::vector<std::vector<Vec3>> accel_;      // deformable blocks: nodal accelerations
     std::vector<MaterialPoint> probes_, loads_;
     std::vector<Vec3> load_point_, load_force_; // per load: last application point and force

@@ -1,4 +1,4 @@
-// the bench section: tables from trade.csv, stability.csv and wall.csv, with the figures
+// the bench section: tables from wall.csv, scale.csv, trade.csv and stability.csv, with the figures
 #include "bench/bench_report.hpp"
 
 #include <algorithm>
@@ -8,6 +8,7 @@
 #include <fstream>
 #include <sstream>
 
+#include "bench/scale_report.hpp"
 #include "bench/wall_bench.hpp"
 #include "output/atomic_write.hpp"
 
@@ -17,18 +18,9 @@ namespace cairn::bench {
 
 namespace {
 
-std::string fmt(const char* f, double v) {
-    char b[64];
-    std::snprintf(b, sizeof b, f, v);
-    return b;
-}
+std::string fmt(const char* f, double v) { return number_format(f, v); }
 
-std::string slurp(const fs::path& p) {
-    std::ifstream in(p);
-    std::stringstream ss;
-    ss << in.rdbuf();
-    return ss.str();
-}
+std::string slurp(const fs::path& p) { return read_whole(p.string()); }
 
 std::vector<std::string> variants_of(const std::vector<TradePoint>& pts, const std::string& c) {
     std::vector<std::string> v;
@@ -101,17 +93,20 @@ report::Document bench_document(const std::string& dir) {
         d.heading(2, "Throughput on a brick wall, same time step");
         d.paragraph("A running-bond wall of 0.4 × 0.2 × 0.2 m bricks on a fixed base, every backend at the same dt, "
                     "one after the other (cairn bench wall). Steps per second are the median of the repeats; the "
-                    "ratio is to Bullet on the same setup. 'top moved' is the largest displacement of a top-course "
+                    "ratio is steps per second over Bullet's at the same dt: a cost per step, not per simulated "
+                    "second at equal accuracy (each backend needs its own dt for that: see the scale section). "
+                    "'top moved' is the largest displacement of a top-course "
                     "brick at the end: with kn = 3e7 released touching the soft joints settle dynamically; with "
                     "kn = 3e9 placed at the static penetrations the wall stands still.");
-        report::Table t{{"setup", "backend", "contact", "blocks", "steps", "steps/s", "ratio to Bullet", "top moved",
-                         "status"}, {}};
+        report::Table t{{"setup", "backend", "contact", "blocks", "steps", "steps/s", "steps/s over Bullet's, same dt",
+                         "top moved", "status"}, {}};
         for (const auto& r : rows)
             t.rows.push_back({r.setup, r.backend, r.contact, std::to_string(r.blocks), std::to_string(r.steps),
                               fmt("%.1f", r.steps_per_second), r.ratio_to_bullet > 0 ? fmt("%.2f", r.ratio_to_bullet) : "-",
                               fmt("%.3g m", r.top_settlement), r.status.substr(0, 120)});
         d.table(t);
     }
+    add_scale_section(d, dir, note);
     // speed-accuracy trade
     if (fs::exists(root / "trade.csv")) {
         const auto pts = read_trade_csv((root / "trade.csv").string());
@@ -199,6 +194,19 @@ report::Document bench_document(const std::string& dir) {
     }
     if (!note.empty()) d.paragraph("Figures: " + note);
     return d;
+}
+
+std::string number_format(const char* format, double v) {
+    char b[64];
+    std::snprintf(b, sizeof b, format, v);
+    return b;
+}
+
+std::string read_whole(const std::string& path) {
+    std::ifstream in(path);
+    std::stringstream ss;
+    ss << in.rdbuf();
+    return ss.str();
 }
 
 void write_bench_report(const std::string& dir) {

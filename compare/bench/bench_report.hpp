@@ -34,6 +34,11 @@ report::Table stability_limits_table(const std::vector<StabilityPoint>& points);
 /// referenced relative to DIR
 report::Document bench_document(const std::string& dir);
 
+/// printf-style text of one number (e.g. "%.3g s")
+std::string number_format(const char* format, double v);
+/// the whole text of a file ("" when it cannot be read)
+std::string read_whole(const std::string& path);
+
 /// write DIR/bench.md and DIR/bench.html from bench_document(dir)
 void write_bench_report(const std::string& dir);
 

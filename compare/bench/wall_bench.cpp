@@ -123,18 +123,26 @@ std::string wall_csv(const std::vector<WallResult>& rows) {
     return o.str();
 }
 
-std::vector<WallResult> parse_wall_csv(const std::string& text) {
-    std::vector<WallResult> out;
+void for_each_csv_row(const std::string& text, size_t fields,
+                      const std::function<void(const std::vector<std::string>&)>& row) {
     std::istringstream in(text);
     std::string line;
     std::getline(in, line);
-    auto num = [](const std::string& s) { return s.empty() ? NAN : std::strtod(s.c_str(), nullptr); };
     while (std::getline(in, line)) {
         const auto f = report::split_csv_line(line);
-        if (f.size() != 11) continue;
+        if (f.size() == fields) row(f);
+    }
+}
+
+double csv_number(const std::string& field) { return field.empty() ? NAN : std::strtod(field.c_str(), nullptr); }
+
+std::vector<WallResult> parse_wall_csv(const std::string& text) {
+    std::vector<WallResult> out;
+    const auto num = csv_number;
+    for_each_csv_row(text, 11, [&](const std::vector<std::string>& f) {
         out.push_back({f[0], f[1], f[2], num(f[3]), num(f[4]), std::atoi(f[5].c_str()), std::atoi(f[6].c_str()),
                        num(f[7]), num(f[8]), num(f[9]), f[10]});
-    }
+    });
     return out;
 }
 

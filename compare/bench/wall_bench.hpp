@@ -1,6 +1,7 @@
 #pragma once
 /// The side-by-side throughput of the backends on a running-bond brick wall at the same time step
-/// (the performance of the in-house engine): steps per second and the ratio to Bullet.
+/// (the performance of the in-house engine): steps per second and their ratio to Bullet's at
+/// the same dt (a cost per step; `cairn bench scale` compares cost at equal accuracy).
 
 #include <functional>
 #include <memory>
@@ -35,7 +36,8 @@ struct WallResult {
     int blocks = 0;                        ///< free blocks
     int steps = 0;                         ///< steps per repeat
     double steps_per_second = 0.0;         ///< median over the repeats
-    double ratio_to_bullet = 0.0;          ///< steps/s over Bullet's on the same setup (0: no Bullet)
+    double ratio_to_bullet = 0.0;          ///< steps/s over Bullet's at the same dt (0: no Bullet): a cost
+                                           ///< per step, not per simulated second at equal accuracy
     double top_settlement = 0.0;           ///< largest displacement of a top-course brick at the end, m
     std::string status;                    ///< "completed", "unstable: ...", "refused: ..."
 };
@@ -45,6 +47,12 @@ std::vector<WallResult> run_wall(const std::vector<std::string>& backends, const
                                  int courses, int per_course, int steps, int repeats,
                                  const std::function<std::unique_ptr<Backend>(const std::string&)>& make,
                                  bool quiet);
+
+/// call `row` with the fields of every line after the header of a csv text that has `fields` of them
+void for_each_csv_row(const std::string& text, size_t fields,
+                      const std::function<void(const std::vector<std::string>&)>& row);
+/// a csv number field (empty: NaN)
+double csv_number(const std::string& field);
 
 /// wall.csv text, and its parse
 std::string wall_csv(const std::vector<WallResult>& rows);
