@@ -355,8 +355,8 @@ Sample SiconosBackend::sample() const {
         s.probes.push_back(block_point_world(blocks_[p.block], com(p.block), orientation(p.block), p.point));
     s.energy.external = external_work_;
     s.energy.dissipated = initial_energy_ - s.energy.kinetic - s.energy.potential + external_work_;
-    // active contacts: those the last step closed (index set 1 of the Moreau–Jean scheme)
-    s.contacts = sim_ && sim_->indexSet(1) ? static_cast<int>(sim_->indexSet(1)->size()) : 0;
+    // active contacts: those that carried a normal impulse over the last step
+    for (const Linked& l : linked_) s.contacts += l.inter->lambda(1) && (*l.inter->lambda(1))(0) > 0.0 ? 1 : 0;
     return s;
 }
 
@@ -373,8 +373,8 @@ std::vector<std::string> SiconosBackend::notes() const {
 std::vector<ContactPoint> SiconosBackend::contact_points() const {
     std::vector<ContactPoint> out;
     for (const Linked& l : linked_) {
+        if (!l.inter->lambda(1) || (*l.inter->lambda(1))(0) <= 0.0) continue;
         const SiconosVector& lambda = *l.inter->lambda(1);
-        if (lambda(0) <= 0.0) continue;
         ContactPoint c;
         c.position = 0.5 * (l.geometry.on_a + l.geometry.on_b);
         c.normal = l.geometry.normal;

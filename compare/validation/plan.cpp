@@ -33,7 +33,7 @@ std::vector<Variant> variants_for(const Scene& scene, const std::vector<std::str
             continue;
         }
         if (rigid_ref) out.push_back({b + "-rigid", b, "rigid", "rigid"});
-        if (penalty_ref) out.push_back({b + "-matched", b, "matched", "rigid"});
+        if (penalty_ref && b != "siconos") out.push_back({b + "-matched", b, "matched", "rigid"});   // siconos: rigid only
     }
     return out;
 }
