@@ -4,7 +4,9 @@
 
 #include <SolverOptions.h>
 
+#include <algorithm>
 #include <cmath>
+#include <map>
 #include <sstream>
 
 #include "engine_settings.hpp"
@@ -72,9 +74,12 @@ private:
     SP::NonSmoothLaw law_;
     struct Linked {
         SP::Interaction inter;
+        std::shared_ptr<PointContactR> relation;
         GapContact geometry;
     };
-    std::vector<Linked> linked_;
+    // the contacts of each near pair (free block first); a pair keeping its number of points keeps
+    // its interactions (their impulses start the solver), moved to the new points
+    std::map<std::pair<int, int>, std::vector<Linked>> linked_;
     double dt_ = 0.0;
     double t_ = 0.0;
     double theta_ = 0.5;
@@ -82,6 +87,8 @@ private:
     std::string solver_;
     double tolerance_ = 0.0;
     long long iterations_ = 0;
+    bool stop_unconverged_ = false;   // a step missing the solver tolerance stops the run
+    double worst_residual_ = 0.0;     // largest residual the solver ended a step with
     double initial_energy_ = 0.0;
     double external_work_ = 0.0;
     int solver_failures_ = 0;      // steps whose friction-contact solve missed its tolerance
@@ -126,7 +133,7 @@ void SiconosBackend::build(const Scene& scene, const RunOptions& options) {
     bodies_.clear();
     force_.clear();
     moment_.clear();
-    t_ = external_work_ = worst_gap_ = 0.0;
+    t_ = external_work_ = worst_gap_ = worst_residual_ = 0.0;
     solver_failures_ = newton_failures_ = 0;
     EngineSettings settings(scene_, "siconos");
     if (contact_mode(settings, options) != "rigid")
@@ -139,6 +146,7 @@ void SiconosBackend::build(const Scene& scene, const RunOptions& options) {
     solver_ = settings.word("solver", "nsgs", {"nsgs", "nsn", "admm"});
     tolerance_ = settings.number("tolerance", 1e-5, 1e-16);
     iterations_ = settings.integer("iterations", 1000, 1);
+    stop_unconverged_ = settings.word("on_unconverged", "warn", {"warn", "stop"}) == "stop";
     settings.finish();
     blocks_ = rigid_blocks(scene_, "siconos");
 
@@ -213,7 +221,8 @@ void SiconosBackend::build(const Scene& scene, const RunOptions& options) {
     note(n);
     n << "contact: Signorini at velocity level, exact Coulomb cone mu " << scene_.contact.friction
       << ", Newton impact law e_n " << scene_.contact.restitution << " (e_t 0); FrictionContact(3) by " << solver_
-      << ", tolerance " << tolerance_ << ", " << iterations_ << " iterations";
+      << ", tolerance " << tolerance_ << ", " << iterations_ << " iterations; a step missing the tolerance "
+      << (stop_unconverged_ ? "stops the run" : "is counted (last note)");
     note(n);
     n << "contact geometry: cairn's face-clipping collider, up to 4 points per pair, made when the gap is below "
       << margin_ << " m (closed by the scheme only when it would close within the step)";
@@ -264,7 +273,7 @@ void SiconosBackend::set_forces() {
 
 // the point contacts of the current state replace the last step's
 void SiconosBackend::update_contacts() {
-    for (const Linked& l : linked_) sim_->unlink(l.inter);
+    auto old = std::move(linked_);
     linked_.clear();
     std::vector<Corners> corners(blocks_.size());
     std::vector<bool> fixed(blocks_.size());
@@ -274,7 +283,17 @@ void SiconosBackend::update_contacts() {
     }
     for (auto [i, j] : near_pairs(corners, fixed, margin_)) {
         if (fixed[i]) std::swap(i, j);   // the first body of a relation must move
-        for (GapContact c : gap_contacts(corners[i], corners[j], margin_)) {
+        const std::vector<GapContact> found = gap_contacts(corners[i], corners[j], margin_);
+        if (found.empty()) continue;
+        auto kept = old.find({i, j});
+        const bool reuse = kept != old.end() && kept->second.size() == found.size();
+        if (kept != old.end() && !reuse) {
+            for (const Linked& l : kept->second) sim_->unlink(l.inter);
+            old.erase(kept);
+        }
+        std::vector<Linked>& list = linked_[{i, j}];
+        for (size_t k = 0; k < found.size(); ++k) {
+            GapContact c = found[k];
             c.a = i;
             c.b = j;
             worst_gap_ = std::min(worst_gap_, c.gap);
@@ -287,13 +306,23 @@ void SiconosBackend::update_contacts() {
                 on_b = qb.conjugate() * (c.on_b - com(j));
                 normal = qb.conjugate() * c.normal;
             }
+            if (reuse) {
+                Linked l = kept->second[k];
+                l.relation->set(on_a.data(), on_b.data(), normal.data());
+                l.geometry = c;
+                list.push_back(l);
+                continue;
+            }
             auto relation = std::make_shared<PointContactR>(on_a.data(), on_b.data(), normal.data());
             auto inter = std::make_shared<Interaction>(law_, relation);
             if (bodies_[j]) sim_->link(inter, bodies_[i], bodies_[j]);
             else sim_->link(inter, bodies_[i]);
-            linked_.push_back({inter, c});
+            list.push_back({inter, relation, c});
         }
+        if (reuse) old.erase(kept);
     }
+    for (const auto& [pair, list] : old)
+        for (const Linked& l : list) sim_->unlink(l.inter);
 }
 
 double SiconosBackend::load_power() const {
@@ -325,6 +354,16 @@ StepStatus SiconosBackend::step() {
     }
     solver_failures = nullptr;
     solver_failures_ += failures;
+    if (!linked_.empty())
+        worst_residual_ = std::max(worst_residual_, problem_->numericsSolverOptions()->dparam[SICONOS_DPARAM_RESIDU]);
+    if (failures > 0 && stop_unconverged_) {
+        std::ostringstream m;
+        m << "Siconos " << solver_ << " did not converge at t = " << t_ << " s: residual "
+          << problem_->numericsSolverOptions()->dparam[SICONOS_DPARAM_RESIDU] << " after " << iterations_
+          << " iterations, tolerance " << tolerance_ << " (on_unconverged = \"stop\")";
+        failure_ = m.str();
+        return StepStatus::unstable;
+    }
     t_ += dt_;
     external_work_ += 0.5 * (p0 + load_power()) * dt_;
     for (size_t i = 0; i < bodies_.size(); ++i)
@@ -356,15 +395,17 @@ Sample SiconosBackend::sample() const {
     s.energy.external = external_work_;
     s.energy.dissipated = initial_energy_ - s.energy.kinetic - s.energy.potential + external_work_;
     // active contacts: those that carried a normal impulse over the last step
-    for (const Linked& l : linked_) s.contacts += l.inter->lambda(1) && (*l.inter->lambda(1))(0) > 0.0 ? 1 : 0;
+    for (const auto& [pair, list] : linked_)
+        for (const Linked& l : list) s.contacts += l.inter->lambda(1) && (*l.inter->lambda(1))(0) > 0.0 ? 1 : 0;
     return s;
 }
 
 std::vector<std::string> SiconosBackend::notes() const {
     std::vector<std::string> out = notes_;
     std::ostringstream n;
-    n << "solver: " << solver_failures_ << " steps missed the friction-contact tolerance, " << newton_failures_
-      << " steps ended the Newton loop unconverged; deepest overlap " << -worst_gap_ << " m";
+    n << "solver: " << solver_failures_ << " steps missed the friction-contact tolerance (worst residual "
+      << worst_residual_ << "), " << newton_failures_ << " steps ended the Newton loop unconverged; deepest overlap "
+      << -worst_gap_ << " m";
     out.push_back(n.str());
     return out;
 }
@@ -372,22 +413,22 @@ std::vector<std::string> SiconosBackend::notes() const {
 // the last step's contacts with the impulse of each over the step, as a mean force
 std::vector<ContactPoint> SiconosBackend::contact_points() const {
     std::vector<ContactPoint> out;
-    for (const Linked& l : linked_) {
-        if (!l.inter->lambda(1) || (*l.inter->lambda(1))(0) <= 0.0) continue;
-        const SiconosVector& lambda = *l.inter->lambda(1);
-        ContactPoint c;
-        c.position = 0.5 * (l.geometry.on_a + l.geometry.on_b);
-        c.normal = l.geometry.normal;
-        c.normal_force = lambda(0) / dt_ * c.normal;
-        // the tangential impulse from the change of momentum is not split per point: the shear
-        // force is the part of the relation's reaction on a normal to n
-        const SiconosVector& r = *std::static_pointer_cast<NewtonEulerR>(l.inter->relation())->contactForce();
-        Vec3 total(r(0), r(1), r(2));
-        c.shear_force = (total - total.dot(c.normal) * c.normal) / dt_;
-        c.block_a = l.geometry.a;
-        c.block_b = l.geometry.b;
-        out.push_back(c);
-    }
+    for (const auto& [pair, list] : linked_)
+        for (const Linked& l : list) {
+            if (!l.inter->lambda(1) || (*l.inter->lambda(1))(0) <= 0.0) continue;
+            ContactPoint c;
+            c.position = 0.5 * (l.geometry.on_a + l.geometry.on_b);
+            c.normal = l.geometry.normal;
+            c.normal_force = (*l.inter->lambda(1))(0) / dt_ * c.normal;
+            // the relation's reaction on a (world force part of its generalized force): its part
+            // normal to n is the friction impulse
+            const SiconosVector& r = *l.relation->contactForce();
+            const Vec3 total(r(0), r(1), r(2));
+            c.shear_force = (total - total.dot(c.normal) * c.normal) / dt_;
+            c.block_a = l.geometry.a;
+            c.block_b = l.geometry.b;
+            out.push_back(c);
+        }
     return out;
 }
 

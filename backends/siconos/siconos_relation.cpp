@@ -20,6 +20,10 @@ void to_world(const SiconosVector& q, const SiconosVector& v, SiconosVector& out
 }  // namespace
 
 PointContactR::PointContactR(const double on_a[3], const double on_b[3], const double normal[3]) {
+    set(on_a, on_b, normal);
+}
+
+void PointContactR::set(const double on_a[3], const double on_b[3], const double normal[3]) {
     for (int k = 0; k < 3; ++k) {
         (*_relPc1)(k) = on_a[k];
         (*_relPc2)(k) = on_b[k];

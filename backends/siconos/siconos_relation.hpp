@@ -11,6 +11,8 @@ class PointContactR : public NewtonEuler3DR {
 public:
     /// points and normal in the body frames (b's in the world when b is fixed), m
     PointContactR(const double on_a[3], const double on_b[3], const double normal[3]);
+    /// move the contact to new points and normal, same frames as the constructor
+    void set(const double on_a[3], const double on_b[3], const double normal[3]);
     void computeh(double time, const BlockVector& q0, SiconosVector& y) override;
 };
 
