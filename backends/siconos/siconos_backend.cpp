@@ -347,6 +347,7 @@ StepStatus SiconosBackend::step() {
         sim_->computeOneStep();
         if (!sim_->isNewtonConverge()) ++newton_failures_;
         sim_->nextStep();
+        sim_->clearNSDSChangeLog();   // it keeps every linked and unlinked interaction otherwise
     } catch (const std::exception& e) {
         solver_failures = nullptr;
         failure_ = std::string("Siconos: ") + e.what() + " at t = " + std::to_string(t_) + " s";
@@ -404,7 +405,8 @@ std::vector<std::string> SiconosBackend::notes() const {
     std::vector<std::string> out = notes_;
     std::ostringstream n;
     n << "solver: " << solver_failures_ << " steps missed the friction-contact tolerance (worst residual "
-      << worst_residual_ << "), " << newton_failures_ << " steps ended the Newton loop unconverged; deepest overlap "
+      << worst_residual_ << "), " << newton_failures_ << " steps ended the Newton loop unconverged ("
+      << (sim_ ? sim_->getNewtonCumulativeNbIterations() : 0) << " Newton iterations in all); deepest overlap "
       << -worst_gap_ << " m";
     out.push_back(n.str());
     return out;
