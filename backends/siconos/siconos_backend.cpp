@@ -4,6 +4,8 @@
 
 #include <SolverOptions.h>
 
+#include <dlfcn.h>
+
 #include <algorithm>
 #include <cmath>
 #include <map>
@@ -33,6 +35,18 @@ thread_local int* solver_failures = nullptr;
 
 void count_solver_failure(int info, Simulation*) {
     if (info != 0 && solver_failures) ++*solver_failures;
+}
+
+// Siconos's matrices are 6 × 6 to a few hundred rows: a threaded OpenBLAS spends more time
+// yielding between its threads than computing (a third of a rocking run). One thread, when the
+// BLAS in use is OpenBLAS (found at run time: the BLAS is chosen by the system's alternatives)
+void single_threaded_blas() {
+    static const bool done = [] {
+        using SetThreads = void (*)(int);
+        if (auto set = reinterpret_cast<SetThreads>(dlsym(RTLD_DEFAULT, "openblas_set_num_threads"))) set(1);
+        return true;
+    }();
+    (void)done;
 }
 
 SP::SiconosVector vector3(const Vec3& v) {
@@ -135,6 +149,7 @@ void SiconosBackend::build(const Scene& scene, const RunOptions& options) {
     moment_.clear();
     t_ = external_work_ = worst_gap_ = worst_residual_ = 0.0;
     solver_failures_ = newton_failures_ = 0;
+    single_threaded_blas();
     EngineSettings settings(scene_, "siconos");
     if (contact_mode(settings, options) != "rigid")
         throw Error("backend siconos has only rigid (non-smooth) contact: contact mode 'matched' needs a penalty "
