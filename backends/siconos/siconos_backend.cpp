@@ -22,6 +22,10 @@ std::vector<FeatureSupport> siconos_capabilities();
 
 namespace {
 
+// the most free blocks a scene may have: NSGS iterations grow with a stack's height, and a
+// 16-block wall already takes about 0.1 s a step (docs/backends.md)
+constexpr int kMaxFreeBlocks = 64;
+
 // the solver names of the settings table and Siconos's numerics ids
 int solver_id(const std::string& name) {
     if (name == "nsn") return SICONOS_FRICTION_3D_NSN_AC;
@@ -103,6 +107,7 @@ private:
     long long iterations_ = 0;
     bool stop_unconverged_ = false;   // a step missing the solver tolerance stops the run
     double worst_residual_ = 0.0;     // largest residual the solver ended a step with
+    long long solver_iterations_ = 0; // the solver's iterations over the run
     double initial_energy_ = 0.0;
     double external_work_ = 0.0;
     int solver_failures_ = 0;      // steps whose friction-contact solve missed its tolerance
@@ -148,6 +153,7 @@ void SiconosBackend::build(const Scene& scene, const RunOptions& options) {
     force_.clear();
     moment_.clear();
     t_ = external_work_ = worst_gap_ = worst_residual_ = 0.0;
+    solver_iterations_ = 0;
     solver_failures_ = newton_failures_ = 0;
     single_threaded_blas();
     EngineSettings settings(scene_, "siconos");
@@ -164,6 +170,11 @@ void SiconosBackend::build(const Scene& scene, const RunOptions& options) {
     stop_unconverged_ = settings.word("on_unconverged", "warn", {"warn", "stop"}) == "stop";
     settings.finish();
     blocks_ = rigid_blocks(scene_, "siconos");
+    int free_blocks = 0;
+    for (const RigidBlock& b : blocks_) free_blocks += b.fixed ? 0 : 1;
+    if (free_blocks > kMaxFreeBlocks)
+        throw Error("backend siconos: " + std::to_string(free_blocks) + " free blocks exceed its limit of " +
+                    std::to_string(kMaxFreeBlocks) + " (its solver needs about 0.1 s a step for 16 stacked blocks)");
 
     // contacts are made for pairs closer than a margin, so the scheme can close them before they
     // meet: twice the largest block's step of travel at 5 m/s, at least 0.1 mm
@@ -370,6 +381,7 @@ StepStatus SiconosBackend::step() {
     }
     solver_failures = nullptr;
     solver_failures_ += failures;
+    if (!linked_.empty()) solver_iterations_ += problem_->numericsSolverOptions()->iparam[SICONOS_IPARAM_ITER_DONE];
     if (!linked_.empty())
         worst_residual_ = std::max(worst_residual_, problem_->numericsSolverOptions()->dparam[SICONOS_DPARAM_RESIDU]);
     if (failures > 0 && stop_unconverged_) {
@@ -419,7 +431,8 @@ Sample SiconosBackend::sample() const {
 std::vector<std::string> SiconosBackend::notes() const {
     std::vector<std::string> out = notes_;
     std::ostringstream n;
-    n << "solver: " << solver_failures_ << " steps missed the friction-contact tolerance (worst residual "
+    n << "solver: " << solver_iterations_ << " iterations in all; " << solver_failures_
+      << " steps missed the friction-contact tolerance (worst residual "
       << worst_residual_ << "), " << newton_failures_ << " steps ended the Newton loop unconverged ("
       << (sim_ ? sim_->getNewtonCumulativeNbIterations() : 0) << " Newton iterations in all); deepest overlap "
       << -worst_gap_ << " m";

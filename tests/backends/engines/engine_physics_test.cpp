@@ -200,6 +200,9 @@ TEST_CASE("every backend: the same scene twice gives identical samples", "[engin
 TEST_CASE("reference engines: the drum column overturns at a/g = B/H plus the ramp's lag", "[engines][structures]") {
     for (const std::string& engine : engine_names()) {
         CAPTURE(engine);
+        // siconos: its NSGS takes ~116 iterations a step on this stack (12 coplanar contacts), so
+        // the 34 s pushover costs ~100 s of wall time per simulated second: left out (docs/backends.md)
+        if (engine == "siconos") continue;
         const Scene s = load_scene(std::string(CAIRN_SOURCE_DIR) + "/scenarios/structures/column_pushover.toml", {});
         std::vector<Sample> samples;
         long long k = 0;

@@ -7,6 +7,7 @@
 
 #include "engine_scenes.hpp"
 #include "registry.hpp"
+#include "scene/scene_io.hpp"
 
 using namespace cairn;
 using namespace cairn::test;
@@ -85,4 +86,22 @@ TEST_CASE("siconos: a solver missing its tolerance is counted, or stops the run"
         CHECK(status == StepStatus::unstable);
         CHECK(b->failure().find("did not converge") != std::string::npos);
     }
+}
+
+// a known miss, kept visible: on the slope the cube slides (0.038 m in 0.2 s, about 1.9 m/s²)
+// although the same cube on a horizontal face under gravity tilted by 45° holds at mu = 1.1 and
+// slides at 0.8 with the exact (sin 45° - 0.8 cos 45°) g; a tilted normal on a rotated block loses
+// friction somewhere between cairn's relation and Siconos (docs/backends.md)
+TEST_CASE("siconos: a cube on a 45 degree slope holds at mu = 1.1", "[engines][siconos][!mayfail]") {
+    if (!built()) return;
+    // the rolling case without its perturbation: tan 45° = 1 < 1.1, so it neither slides nor tips
+    Scene s = load_scene(std::string(CAIRN_SOURCE_DIR) + "/scenarios/paper/rolling.toml", {});
+    s.blocks[0].angular_velocity = Vec3::Zero();
+    auto b = build_backend("siconos", s, "rigid");
+    const Vec3 start = b->sample().blocks[0].position;
+    for (int i = 0; i < 2000; ++i) REQUIRE(b->step() == StepStatus::ok);
+    const double moved = (b->sample().blocks[0].position - start).norm();
+    CAPTURE(moved);
+    // a rigid stick: no more than the solver's tolerance lets creep, 0.1 mm in 0.2 s
+    CHECK(moved < 1e-4);
 }
