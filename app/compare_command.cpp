@@ -104,7 +104,7 @@ int compare_command(const CompareOptions& options) {
     // on a terminal one progress line for all runs instead of a line per run; nothing otherwise
     plan.quiet = true;
     const bool show = !options.quiet && stderr_is_terminal();
-    plan.serial_backends = {"ode"};   // Debian's ODE keeps its collision data global (no mt_collisions)
+    plan.serial_backends = {"ode", "siconos"};   // Debian's ODE keeps its collision data global (no mt_collisions); Siconos 4.4's thread safety is not established
     plan.cases.push_back(std::move(c));
 
     // the report is built beside the old one and swapped in whole: compare owns these entries of

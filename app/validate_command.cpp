@@ -60,7 +60,7 @@ int validate_command(const ValidateOptions& options) {
     plan.overrides = options.overrides;
     plan.jobs = options.jobs;
     plan.quiet = options.quiet;
-    plan.serial_backends = {"ode"};   // Debian's ODE keeps its collision data global (no mt_collisions)
+    plan.serial_backends = {"ode", "siconos"};   // Debian's ODE keeps its collision data global (no mt_collisions); Siconos 4.4's thread safety is not established
     try {
         for (const auto& b : backends) make_backend(b);
         std::vector<Override> overrides;

@@ -11,6 +11,9 @@
 #ifdef CAIRN_WITH_MUJOCO
 #include "mujoco/mujoco_backend.hpp"
 #endif
+#ifdef CAIRN_WITH_SICONOS
+#include "siconos/siconos_backend.hpp"
+#endif
 
 namespace cairn {
 
@@ -26,6 +29,9 @@ const std::vector<BackendInfo>& available_backends() {
 #endif
 #ifdef CAIRN_WITH_MUJOCO
         l.push_back(mujoco_backend_info());
+#endif
+#ifdef CAIRN_WITH_SICONOS
+        l.push_back(siconos_backend_info());
 #endif
         return l;
     }();

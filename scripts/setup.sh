@@ -16,6 +16,7 @@ packages=(
   libbenchmark-dev                   # benchmarks of kernels
   gnuplot-nox                        # figures of the report
   libbullet-dev libode-dev libmujoco-dev   # reference engines
+  libsiconos-mechanics-dev           # the non-smooth contact dynamics engine (Siconos)
   python3-meshio                     # test: VTK files read back by an independent reader
   chromium                           # test: the 3-D replay rendered headless
   clang-14 libclang-rt-14-dev libfuzzer-14-dev   # the clang build and the fuzzer (docs/development.md)

@@ -94,6 +94,7 @@ std::vector<StabilityConfig> stability_configs(const std::string& backend, const
     std::vector<StabilityConfig> out;
     auto add = [&](const std::string& param, const std::string& text, double value, Scene scene,
                    const std::string& mode, auto judge) {
+        if (mode == "matched" && backend == "siconos") return;   // rigid (non-smooth) contact only
         StabilityConfig c;
         c.point.backend = backend;
         c.point.parameter = param;

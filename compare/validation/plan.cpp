@@ -33,7 +33,8 @@ std::vector<Variant> variants_for(const Scene& scene, const std::vector<std::str
             out.push_back({"dem-deformable", b, "rigid", "deformable"});
             continue;
         }
-        for (const auto& m : modes) out.push_back({b + "-" + m, b, m, "rigid"});
+        for (const auto& m : modes)
+            if (m != "matched" || b != "siconos") out.push_back({b + "-" + m, b, m, "rigid"});   // siconos: rigid only
     }
     return out;
 }

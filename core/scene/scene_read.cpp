@@ -164,7 +164,7 @@ void read_backends(const TableReader& root, Scene& scene) {
     Item section = root.get("backends");
     if (!section) return;
     TableReader all(root.sources(), section.table(), "backends");
-    const std::vector<std::string> known = {"dem", "bullet", "ode", "mujoco"};
+    const std::vector<std::string> known = {"dem", "bullet", "ode", "mujoco", "siconos"};
     for (auto&& [k, v] : all.table()) {
         const std::string name(k.str());
         Item it = all.get(name);

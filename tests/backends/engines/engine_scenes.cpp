@@ -39,6 +39,21 @@ std::vector<std::string> all_backend_names() {
     return names;
 }
 
+bool has_matched_mode(const std::string& engine) {
+    for (const auto& b : available_backends())
+        if (b.name == engine)
+            for (const auto& f : b.capabilities)
+                if (f.feature == "penalty stiffness kn·A") return f.support != Support::none;
+    return true;
+}
+
+std::vector<std::string> matched_backend_names() {
+    std::vector<std::string> names;
+    for (const auto& name : all_backend_names())
+        if (has_matched_mode(name)) names.push_back(name);
+    return names;
+}
+
 std::unique_ptr<Backend> build_backend(const std::string& engine, const Scene& scene, const std::string& mode) {
     auto backend = make_backend(engine);
     RunOptions options;

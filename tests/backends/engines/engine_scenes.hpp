@@ -28,6 +28,13 @@ std::vector<std::string> engine_names();
 /// every backend built into this binary, the in-house dem included
 std::vector<std::string> all_backend_names();
 
+/// the backends with a matched (penalty) contact mode: all but those whose capability row has no
+/// penalty stiffness (siconos: rigid non-smooth contact only)
+std::vector<std::string> matched_backend_names();
+
+/// true when `engine` has the matched contact mode
+bool has_matched_mode(const std::string& engine);
+
 /// a backend `engine` built for `scene` in contact mode `mode` ("rigid" or "matched")
 std::unique_ptr<Backend> build_backend(const std::string& engine, const Scene& scene, const std::string& mode);
 

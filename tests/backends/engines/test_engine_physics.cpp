@@ -56,7 +56,7 @@ TEST_CASE("every backend: free fall follows g t^2 / 2", "[engines]") {
 }
 
 TEST_CASE("every backend: matched contact rests at mg/(kn A)", "[engines]") {
-    const std::string engine = GENERATE(from_range(all_backend_names()));
+    const std::string engine = GENERATE(from_range(matched_backend_names()));
     CAPTURE(engine);
     Scene s = base_scene("rest");
     s.contact.damping_rule = ContactDampingRule::ratio;
@@ -184,6 +184,7 @@ TEST_CASE("every backend: the same scene twice gives identical samples", "[engin
     const std::string engine = GENERATE(from_range(all_backend_names()));
     const std::string mode = GENERATE(as<std::string>{}, "rigid", "matched");
     CAPTURE(engine, mode);
+    if (mode == "matched" && !has_matched_mode(engine)) return;   // rigid contact only
     Scene s = rocking_block(0.5 * std::atan(0.2));
     s.blocks[0].velocity = Vec3(0.05, 0.02, 0.0);
     std::vector<Sample> first, second;
@@ -203,6 +204,9 @@ TEST_CASE("every backend: the same scene twice gives identical samples", "[engin
 TEST_CASE("reference engines: the drum column overturns at a/g = B/H plus the ramp's lag", "[engines][structures]") {
     for (const std::string& engine : engine_names()) {
         CAPTURE(engine);
+        // siconos: its NSGS takes ~116 iterations a step on this stack (12 coplanar contacts), so
+        // the 34 s pushover costs ~100 s of wall time per simulated second: left out (docs/backends.md)
+        if (engine == "siconos") continue;
         const Scene s = load_scene(std::string(CAIRN_SOURCE_DIR) + "/scenarios/structures/column_pushover.toml", {});
         std::vector<Sample> samples;
         long long k = 0;

@@ -34,8 +34,12 @@ TEST_CASE("reference engines: settings tables are checked", "[engines]") {
         CHECK_THROWS_WITH(b->build(s, RunOptions{}),
                           Catch::Contains("scene.toml:12") && Catch::Contains("'iteratoins'"));
     }
-    SECTION("a scene key selects the matched contact mode") {
+    SECTION("a scene key selects the matched contact mode, or is refused by an engine without it") {
         s.backend_settings[engine]["contact_mode"] = {std::string("matched"), "scene.toml:3"};
+        if (!has_matched_mode(engine)) {
+            CHECK_THROWS_WITH(b->build(s, RunOptions{}), Catch::Contains("matched") && Catch::Contains(engine));
+            return;
+        }
         b->build(s, RunOptions{});
         auto notes = b->notes();
         CHECK(std::find(notes.begin(), notes.end(), "contact_mode: matched") != notes.end());

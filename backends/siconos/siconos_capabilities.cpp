@@ -1,0 +1,28 @@
+// the Siconos row of the capability matrix (docs/backends.md explains each entry)
+#include "backend/capabilities.hpp"
+
+#include <vector>
+
+namespace cairn {
+
+/// how the Siconos backend represents each scene feature
+std::vector<FeatureSupport> siconos_capabilities() {
+    using S = Support;
+    return {
+        {"penalty stiffness kn·A", S::none,
+         "rigid unilateral contact (Signorini condition at velocity level, Moreau–Jean): no normal spring, no "
+         "matched mode"},
+        {"normal contact damping", S::none, "Newton impact law with restitution contact.restitution instead"},
+        {"elastic stick before slip", S::none, "Coulomb friction as a complementarity (rigid stick): no shear spring"},
+        {"friction shape", S::exact, "the exact Coulomb cone per contact point (3-D friction-contact problem), no "
+         "facets"},
+        {"mass-proportional damping", S::approximate,
+         "forces -alpha·m·v and -alpha·I·omega from the start-of-step velocities"},
+        {"stiffness-proportional damping", S::none, "beta ignored (rigid bodies)"},
+        {"deformable blocks", S::none, "refused: run with --model rigid"},
+        {"general convex hexahedra", S::exact,
+         "cairn's face-clipping collider (up to 4 points per pair) handed to Siconos as point contacts"},
+    };
+}
+
+}  // namespace cairn
