@@ -15,10 +15,13 @@ constexpr int kMaxSubdivision = 16;   // the scene reader's bound on contact.sub
 constexpr int kMaxConstraints = 16;   // depth, 4 face edges, and per other side: flush and entering
 
 // the affine constraints of a target side s that do not depend on the target face: the point is
-// behind every other side plane (flush within flush_tol), is not entering through another side
-// (no other side closer by closer_tol) and is nearer to s than to any other side that the same
-// hitting side may hit (the region is shared between them without overlap)
-int side_constraints(const PairGeometry& g, int s, int hit_side, std::array<Affine, kMaxConstraints>& out) {
+// behind every other side plane (flush within flush_tol) and no deeper behind s than behind any
+// other side o. Its depth is its distance to the nearest side: a point nearer to o entered
+// through o, and acts there if the hitting side hits o (the region is then shared without
+// overlap) or not at all. With a tolerance the depth behind s would be measured past the side
+// it entered through: next to a joint between two voussoirs (sides meeting at 3.6°) the adjacent
+// joint face was pushed along the intrados normal with 16× its penetration
+int side_constraints(const PairGeometry& g, int s, std::array<Affine, kMaxConstraints>& out) {
     int k = 0;
     const Vec3& ns = g.normal[s];
     const double cs = ns.dot(g.centre[s]);
@@ -27,8 +30,7 @@ int side_constraints(const PairGeometry& g, int s, int hit_side, std::array<Affi
         const Vec3& no = g.normal[o];
         const double co = no.dot(g.centre[o]);
         out[k++] = Affine{-no, co + g.flush_tol};
-        const bool shared = g.faces[hit_side][o];
-        out[k++] = Affine{ns - no, co - cs + (shared ? 0.0 : g.closer_tol)};
+        out[k++] = Affine{ns - no, co - cs};
     }
     return k;
 }
@@ -58,7 +60,7 @@ void ContactSet::evaluate_overlap(std::vector<Block>& blocks, double dt, long be
             const auto [cn_area, ct_area] = dashpot_per_area(law_, hb, tb, hit_side);
             for (int s = 0; s < 6; ++s) {
                 if (!g.faces[hit_side][s]) continue;
-                const int side_count = side_constraints(g, s, hit_side, cons);
+                const int side_count = side_constraints(g, s, cons);
                 for (int tf : tb.mesh.side_grid[s]) {
                     const Quad tq = tb.face_quad(tf);
                     Aabb tbox;
