@@ -117,7 +117,7 @@ void ContactSet::evaluate_overlap(std::vector<Block>& blocks, double dt, long be
                             }
                             anchor->seen = true;
                             // the pressure centre on the target plane: both blocks are pushed there
-                            const Vec3 xs = in.moment / in.d1;
+                            const Vec3 xs = in.pressure_centre();
                             const NodeWeights wh = node_weights(hb, c.hit_face, xs), wt = node_weights(tb, tf, xs);
                             const Vec3 vrel = wh.velocity(hb) - wt.velocity(tb);
                             const double closing = -vrel.dot(nt);
