@@ -23,6 +23,19 @@ Scene overlap_scene(double friction = 0.6) {
     return s;
 }
 
+// the resultant contact force (N) on block `on` of a scene, from one contact evaluation
+Vec3 contact_resultant(const Scene& s, int on) {
+    std::vector<dem::Block> blocks;
+    for (const auto& d : s.blocks) blocks.push_back(dem::make_block(d, s));
+    dem::ContactSet cs;
+    cs.configure(s.contact, 0.05);
+    cs.refresh(blocks);
+    cs.apply(blocks, 1e-4);
+    Vec3 f = Vec3::Zero();
+    for (const auto& fn : blocks[size_t(on)].f) f += fn;
+    return f;
+}
+
 // resultant contact force on block 0 of two blocks whose edges cross: A's bottom edge runs along
 // x (A turned 45° about x), B's top edge along y (B turned 45° about y); A's edge sits `depth`
 // below B's and is shifted 0.05 m along itself, between the paper grid's points
@@ -32,15 +45,7 @@ Vec3 crossing_force(ContactScheme scheme, double depth) {
     const double h = std::sqrt(0.5);
     add_box(s, "A", Vec3(1, 1, 1), Vec3(0.05, 0, h - depth), false, Quat(Eigen::AngleAxisd(M_PI / 4, Vec3::UnitX())));
     add_box(s, "B", Vec3(1, 1, 1), Vec3(0, 0, -h), true, Quat(Eigen::AngleAxisd(M_PI / 4, Vec3::UnitY())));
-    std::vector<dem::Block> blocks;
-    for (const auto& d : s.blocks) blocks.push_back(dem::make_block(d, s));
-    dem::ContactSet cs;
-    cs.configure(s.contact, 0.05);
-    cs.refresh(blocks);
-    cs.apply(blocks, 1e-4);
-    Vec3 f = Vec3::Zero();
-    for (const auto& fn : blocks[0].f) f += fn;
-    return f;
+    return contact_resultant(s, 0);
 }
 
 // time of the first zero crossing of the tilt about y, s (linear interpolation); -1 if none
@@ -97,15 +102,7 @@ Vec3 joint_force(double depth, Vec3& normal, double& area) {
         b.fixed = i == 4;
         s.blocks.push_back(b);
     }
-    std::vector<dem::Block> blocks;
-    for (const auto& d : s.blocks) blocks.push_back(dem::make_block(d, s));
-    dem::ContactSet cs;
-    cs.configure(s.contact, 0.05);
-    cs.refresh(blocks);
-    cs.apply(blocks, 1e-4);
-    Vec3 f = Vec3::Zero();
-    for (const auto& fn : blocks[1].f) f += fn;
-    return f;
+    return contact_resultant(s, 1);
 }
 
 }  // namespace
