@@ -15,13 +15,16 @@ constexpr int kMaxSubdivision = 16;   // the scene reader's bound on contact.sub
 constexpr int kMaxConstraints = 16;   // depth, 4 face edges, and per other side: flush and entering
 
 // the affine constraints of a target side s that do not depend on the target face: the point is
-// behind every other side plane (flush within flush_tol) and no deeper behind s than behind any
-// other side o. Its depth is its distance to the nearest side: a point nearer to o entered
-// through o, and acts there if the hitting side hits o (the region is then shared without
-// overlap) or not at all. With a tolerance the depth behind s would be measured past the side
-// it entered through: next to a joint between two voussoirs (sides meeting at 3.6°) the adjacent
-// joint face was pushed along the intrados normal with 16× its penetration
-int side_constraints(const PairGeometry& g, int s, std::array<Affine, kMaxConstraints>& out) {
+// behind every other side plane (flush within flush_tol) and is not entering through another
+// side o. Where the hitting side faces o (normals opposed, whichever of the two hits), a point
+// nearer to o than to s entered through o: it acts there (the hitting side hits o, the region is
+// shared along the bisector) or not at all. With a tolerance there the depth behind s was
+// measured past the side the point entered through: next to a joint between two voussoirs
+// (sides meeting at 3.6°) the adjacent joint face was pushed along the intrados normal with 16×
+// its penetration. Where the hitting side runs across o (a face flush with the edge of a face
+// below it) the paper's quarter-edge tolerance stays: a point near the edge came through s, and
+// without it a strip of width d along the edge would drop in and out as d changes
+int side_constraints(const PairGeometry& g, int s, const Vec3& hit_normal, std::array<Affine, kMaxConstraints>& out) {
     int k = 0;
     const Vec3& ns = g.normal[s];
     const double cs = ns.dot(g.centre[s]);
@@ -30,7 +33,8 @@ int side_constraints(const PairGeometry& g, int s, std::array<Affine, kMaxConstr
         const Vec3& no = g.normal[o];
         const double co = no.dot(g.centre[o]);
         out[k++] = Affine{-no, co + g.flush_tol};
-        out[k++] = Affine{ns - no, co - cs};
+        const bool facing = hit_normal.dot(no) < -1e-3;
+        out[k++] = Affine{ns - no, co - cs + (facing ? 0.0 : g.closer_tol)};
     }
     return k;
 }
@@ -60,7 +64,7 @@ void ContactSet::evaluate_overlap(std::vector<Block>& blocks, double dt, long be
             const auto [cn_area, ct_area] = dashpot_per_area(law_, hb, tb, hit_side);
             for (int s = 0; s < 6; ++s) {
                 if (!g.faces[hit_side][s]) continue;
-                const int side_count = side_constraints(g, s, cons);
+                const int side_count = side_constraints(g, s, frames_[size_t(c.hit_block)].normal[size_t(hit_side)], cons);
                 for (int tf : tb.mesh.side_grid[s]) {
                     const Quad tq = tb.face_quad(tf);
                     Aabb tbox;
