@@ -53,6 +53,7 @@ OverlapIntegrals integrate_depth(const ClipPolygon& poly, const Vec3& c, const V
         r.d1 += a * s / 3.0;
         r.d2 += a * (s * s + q) / 12.0;
         r.moment += a * (xd + sx * s) / 12.0;
+        r.first += a * sx / 3.0;
     }
     // a hitting cell seen from the target runs clockwise: the signs of the fan follow its turn
     if (r.area < 0.0) {
@@ -60,6 +61,7 @@ OverlapIntegrals integrate_depth(const ClipPolygon& poly, const Vec3& c, const V
         r.d1 = -r.d1;
         r.d2 = -r.d2;
         r.moment = -r.moment;
+        r.first = -r.first;
     }
     return r;
 }

@@ -34,6 +34,14 @@ struct OverlapIntegrals {
     double d1 = 0.0;               ///< ∫ d dA, m³
     double d2 = 0.0;               ///< ∫ d² dA, m⁴
     Vec3 moment = Vec3::Zero();    ///< ∫ x d dA over the projected points x, m⁴
+    Vec3 first = Vec3::Zero();     ///< ∫ x dA over the projected points x, m³
+    /// the pressure centre ∫x(d + η)/∫(d + η) with η = 1e-12 m: ∫x·d/∫d wherever the depth is
+    /// above rounding; for faces just touching (d ~ 1e-17 m of either sign, ∫d a rounding
+    /// residue) the area's centroid instead of a quotient of residues anywhere in space, m
+    Vec3 pressure_centre() const {
+        constexpr double eta = 1e-12;
+        return (moment + eta * first) / (d1 + eta * area);
+    }
 };
 
 /// integrals of d = n·(c − p) over the projection of `poly` on the plane through c with unit

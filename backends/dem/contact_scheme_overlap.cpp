@@ -15,10 +15,16 @@ constexpr int kMaxSubdivision = 16;   // the scene reader's bound on contact.sub
 constexpr int kMaxConstraints = 16;   // depth, 4 face edges, and per other side: flush and entering
 
 // the affine constraints of a target side s that do not depend on the target face: the point is
-// behind every other side plane (flush within flush_tol), is not entering through another side
-// (no other side closer by closer_tol) and is nearer to s than to any other side that the same
-// hitting side may hit (the region is shared between them without overlap)
-int side_constraints(const PairGeometry& g, int s, int hit_side, std::array<Affine, kMaxConstraints>& out) {
+// behind every other side plane (flush within flush_tol) and is not entering through another
+// side o. Where the hitting side faces o (normals opposed, whichever of the two hits), a point
+// nearer to o than to s entered through o: it acts there (the hitting side hits o, the region is
+// shared along the bisector) or not at all. With a tolerance there the depth behind s was
+// measured past the side the point entered through: next to a joint between two voussoirs
+// (sides meeting at 3.6°) the adjacent joint face was pushed along the intrados normal with 16×
+// its penetration. Where the hitting side runs across o (a face flush with the edge of a face
+// below it) the paper's quarter-edge tolerance stays: a point near the edge came through s, and
+// without it a strip of width d along the edge would drop in and out as d changes
+int side_constraints(const PairGeometry& g, int s, const Vec3& hit_normal, std::array<Affine, kMaxConstraints>& out) {
     int k = 0;
     const Vec3& ns = g.normal[s];
     const double cs = ns.dot(g.centre[s]);
@@ -27,8 +33,8 @@ int side_constraints(const PairGeometry& g, int s, int hit_side, std::array<Affi
         const Vec3& no = g.normal[o];
         const double co = no.dot(g.centre[o]);
         out[k++] = Affine{-no, co + g.flush_tol};
-        const bool shared = g.faces[hit_side][o];
-        out[k++] = Affine{ns - no, co - cs + (shared ? 0.0 : g.closer_tol)};
+        const bool facing = hit_normal.dot(no) < -1e-3;
+        out[k++] = Affine{ns - no, co - cs + (facing ? 0.0 : g.closer_tol)};
     }
     return k;
 }
@@ -68,7 +74,7 @@ void ContactSet::evaluate_overlap(std::vector<Block>& blocks, double dt, long be
                     }
                     return false;
                 };
-                const int side_count = side_constraints(g, s, hit_side, cons);
+                const int side_count = side_constraints(g, s, frames_[size_t(c.hit_block)].normal[size_t(hit_side)], cons);
                 if (missed_by(cons.data(), cons.data() + side_count)) continue;
                 if (!ready) {
                     ready = true;
@@ -123,7 +129,7 @@ void ContactSet::evaluate_overlap(std::vector<Block>& blocks, double dt, long be
                             }
                             anchor->seen = true;
                             // the pressure centre on the target plane: both blocks are pushed there
-                            const Vec3 xs = in.moment / in.d1;
+                            const Vec3 xs = in.pressure_centre();
                             const NodeWeights wh = node_weights(hb, c.hit_face, xs), wt = node_weights(tb, tf, xs);
                             const Vec3 vrel = wh.velocity(hb) - wt.velocity(tb);
                             const double closing = -vrel.dot(nt);

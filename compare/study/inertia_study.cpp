@@ -101,7 +101,8 @@ StudyPoint inertia_point(const StudyCase& c, const std::string& scheme, int n, c
     p.divisions = scheme == "rigid" ? std::array<int, 3>{1, 1, 1} : divisions_of(c, n);
     p.kn = c.kn;
     const Scene scene = load_scene(c.scene_path);
-    p.grid_spacing = scene.contact.grid_spacing;
+    // only the paper's scheme lays hitting points on a grid; 0 says the scene's contact has none
+    p.grid_spacing = scene.contact.scheme == ContactScheme::paper ? scene.contact.grid_spacing : 0.0;
     const BlockDef& b = scene.blocks.at(size_t(scene.reference->block));
     const double rho = scene.materials.at(size_t(b.material)).density;
     const Vec3 axis = is_rocking(scene) ? cases::rocking_axis(scene) : Vec3::UnitY();

@@ -28,7 +28,7 @@ struct StudyPoint {
     int n = 0;                            ///< elements per side in the mesh (0 for rigid)
     std::array<int, 3> divisions{1, 1, 1};
     double kn = 0.0;                      ///< N/m³ (= ks)
-    double grid_spacing = 0.0;            ///< contact hitting-point spacing, m
+    double grid_spacing = 0.0;            ///< contact hitting-point spacing, m (0: overlap contact, no grid)
     double mass = 0.0;                    ///< kg
     double ic_ratio = NAN;                ///< I_c / I_c,exact about the rocking axis (study's own assembly)
     double io_ratio = NAN;                ///< I_O / I_O,exact about the rocking edge (study's own assembly)

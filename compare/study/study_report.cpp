@@ -133,7 +133,9 @@ void add_inertia_section(report::Document& doc, const std::vector<StudyPoint>& p
     std::map<std::string, std::pair<double, double>> kn;
     for (const auto& p : pts) kn[p.case_name] = {p.kn, p.grid_spacing};
     std::string setup = "Contact stiffness kn = ks and hitting-point spacing per case: ";
-    for (const auto& [c, v] : kn) setup += c + " kn = " + fmt("%.3g", v.first) + " N/m³, grid " + fmt("%g", v.second) + " m; ";
+    for (const auto& [c, v] : kn)
+        setup += c + " kn = " + fmt("%.3g", v.first) + " N/m³, " +
+                 (v.second > 0.0 ? "grid " + fmt("%g", v.second) + " m; " : "overlap contact (no grid); ");
     doc.paragraph(setup + "kn = 3e9 on the rocking cases because at the paper's 3e7 the pivot edge's own compliance moves "
                  "the slender block's first impact by up to +38 % (docs/physics.md), which would hide the mass schemes. "
                  "Errors are relative to Housner's exact t1 (exact inertia) and to DroppedBlock::bounce_period. "

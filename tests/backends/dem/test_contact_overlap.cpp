@@ -93,3 +93,42 @@ TEST_CASE("clipping by a plane that misses or holds the whole polygon leaves it 
     clip(poly, Affine{Vec3(1, 0, 0), -2.0});
     CHECK(poly.n == 0);
 }
+
+TEST_CASE("the pressure centre of a face just touching is its centroid and not a quotient of rounding", "[dem][contact]") {
+    // a 0.5 × 0.25 m face off the origin, tilted so that its depth changes sign across it by
+    // rounding-sized amounts: ∫d is a residue of either sign, ∫x·d/∫d could lie anywhere
+    const Vec3 o(1.7, -0.3, 2.1);
+    for (double tilt : {1e-17, -1e-17, 3e-16}) {
+        ClipPolygon poly;
+        poly.n = 4;
+        poly.p = {o + Vec3(0.0, 0.0, -tilt), o + Vec3(0.5, 0.0, tilt), o + Vec3(0.5, 0.25, tilt), o + Vec3(0.0, 0.25, -tilt)};
+        const OverlapIntegrals in = integrate_depth(poly, o, Vec3::UnitZ());
+        INFO("tilt " << tilt << ": d1 " << in.d1 << " centre " << in.pressure_centre().transpose());
+        // the face's centroid (o + (0.25, 0.125, 0)), moved by at most the face's size times
+        // (rounding depth / 1e-12 m): 0.5 m × 1e-15/1e-12 = 5e-4 m (at z = 2.1 a tilt of 3e-16
+        // is a real one ulp, 4.4e-16 m: measured 3.7e-5 m)
+        CHECK((in.pressure_centre() - (o + Vec3(0.25, 0.125, 0.0))).norm() < 5e-4);
+    }
+    // depth crossing zero at rounding size: d from −1e-17 m to +1.01e-17 m across x. ∫x·d/∫d
+    // lies metres outside the face; the blend stays at the centroid
+    {
+        const Vec3 c(1.7, -0.3, 0.0);
+        ClipPolygon poly;
+        poly.n = 4;
+        poly.p = {c + Vec3(0.0, 0.0, 1e-17), c + Vec3(0.5, 0.0, -1.01e-17), c + Vec3(0.5, 0.25, -1.01e-17), c + Vec3(0.0, 0.25, 1e-17)};
+        const OverlapIntegrals in = integrate_depth(poly, c, Vec3::UnitZ());
+        REQUIRE(in.d1 > 0.0);
+        CHECK((in.moment / in.d1 - (c + Vec3(0.25, 0.125, 0.0))).norm() > 1.0);
+        CHECK((in.pressure_centre() - (c + Vec3(0.25, 0.125, 0.0))).norm() < 1e-5);
+    }
+    // a real depth (1 µm to 2 µm across x): the exact ∫x·d/∫d, the 1e-12 m blend moving it by
+    // less than 1e-6 of the face
+    ClipPolygon poly;
+    poly.n = 4;
+    poly.p = {o + Vec3(0.0, 0.0, -1e-6), o + Vec3(0.5, 0.0, -2e-6), o + Vec3(0.5, 0.25, -2e-6), o + Vec3(0.0, 0.25, -1e-6)};
+    const OverlapIntegrals in = integrate_depth(poly, o, Vec3::UnitZ());
+    const Vec3 exact = in.moment / in.d1;
+    // d = (1 + 2x) µm over x ∈ [0, 0.5] m: ∫x·d / ∫d = (5/24)/(3/4) = 5/18 m
+    CHECK(exact.x() - o.x() == Approx(5.0 / 18.0).epsilon(1e-9));   // µm depths at z = 2.1: 1e-10 rounding
+    CHECK((in.pressure_centre() - exact).norm() < 1e-6 * 0.5);
+}

@@ -47,9 +47,11 @@ TEST_CASE("a column of three drums overturns as one body at a/g = B/H plus the r
     check_metrics(r);
 }
 
-// mayfail: today's node-to-face contact lets the wall's bricks sink into each other and the run
-// stops as unstable within half a second at kn = 1e9 (measured: energy growing at 0.40 s); the
-// overlap-integrated contact replacing it is meant to hold the wall
+// mayfail: the wall now has half-brick closers (every brick on its whole base) and the start of
+// its run is stable with closed energy on both contact schemes (paper to 0.54 s, overlap to
+// 0.15 s; the old wall stopped unstable at 0.40 s), but the 36 s ramp has not been run through.
+// With penalty joints the wall leans and should tip below the rigid reference by the Winkler
+// peak's deficit (docs/validation.md), so this verdict is still open
 TEST_CASE("a running-bond wall tips out of plane at a/g = t/H plus the ramp's lag", "[dem][structures][pushover][!mayfail]") {
     bool completed = false;
     const auto r = pushover("wall_pushover", completed);
