@@ -79,6 +79,9 @@ int main(int argc, char** argv) {
         ->allow_extra_args(false);
     compare->add_flag("--quiet,-q", cmp.quiet, "no progress lines");
 
+    MakeOptions make;
+    const auto make_cmds = add_make_commands(app, make);
+
     ValidateOptions val;
     auto* validate = app.add_subcommand("validate", "run the paper's cases on every backend and write the report");
     {
@@ -157,6 +160,8 @@ int main(int argc, char** argv) {
         if (study_inertia->parsed()) return study_inertia_command(inertia);
         if (app.got_subcommand(validate)) return validate_command(val);
         if (app.got_subcommand(compare)) return compare_command(cmp);
+        for (auto* sub : make_cmds)
+            if (sub->parsed()) return make_command(sub->get_name(), make);
         for (auto* sub : bench_cmd->get_subcommands())
             if (sub->parsed()) return bench_command(sub->get_name(), bench);
     } catch (const std::exception& e) {
