@@ -31,8 +31,11 @@ bool read_line(std::istream& in, std::string& line, const std::string& path) {
     return !line.empty();
 }
 
-/// a column name without its unit ("t [s]" -> "t")
-std::string column_name(const std::string& s) { return s.substr(0, s.find(' ')); }
+/// a column name without its unit ("t [s]" -> "t"; a name without one is kept)
+std::string column_name(const std::string& s) {
+    const auto open = s.rfind(" [");
+    return open != std::string::npos && !s.empty() && s.back() == ']' ? s.substr(0, open) : s;
+}
 
 }  // namespace
 
