@@ -35,6 +35,7 @@ int main(int argc, char** argv) {
         ->check(CLI::IsMember({"rigid", "matched"}));
     run->add_flag("--vtk", job.vtk, "also write the run for ParaView into DIR/vtk/ (docs/visualisation.md)");
     run->add_flag("--replay", job.replay, "also write the interactive 3-D replay DIR/replay.html");
+    run->add_flag("--contacts", job.contacts, "also write every sample's contact points and forces to DIR/contacts.csv");
     run->add_flag("--quiet,-q", quiet, "no progress line and no summary");
     add_limit_options(*run, job.limits);
 
