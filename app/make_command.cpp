@@ -165,6 +165,8 @@ Scene generate(const std::string& kind, const std::map<std::string, double>& v) 
         if (tower_brick_count(t) > kMaxGeneratedBlocks)
             throw Error("a " + kind + " of " + std::to_string(tower_brick_count(t)) + " bricks, beyond the limit of " +
                         std::to_string(kMaxGeneratedBlocks));
+        // a row of a 10⁴-block trajectory is about 1.5 MB: sample every 50 ms, not 5
+        s.run.output_interval = 0.05;
         if (kind == "tower") {
             add_tower(s, t);
             s.description = "Brick tower of four bonded walls, " + std::to_string(t.courses) + " courses (cairn make tower)";

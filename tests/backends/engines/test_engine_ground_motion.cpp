@@ -79,7 +79,8 @@ TEST_CASE("every backend: a vertical sine below g keeps contact, the spring foll
     // m(g + a_z) ≥ m g/2 > 0)
     CHECK(highest_gap < 0.0);
     // the closed form within 10 % of its amplitude: the engines' velocity-level springs damp the
-    // free part r·x0 (6 % of it) that the closed form keeps undamped
+    // free part r·x0 (6 % of it) that the closed form keeps undamped (measured: dem 7e-5 of x0,
+    // the engines 2.5-4 %)
     CHECK(worst < 0.1 * x0);
 }
 
@@ -98,8 +99,9 @@ TEST_CASE("every backend: a vertical sine above g lifts the block off when a_z p
         if (first < 0 && s.blocks[0].position.z() - 0.5 > 1e-3) first = s.t;
     });
     WARN(engine << ": gap of 1 mm at " << first << " s, closed form " << t_mm << " s");
-    // 10 ms: the spring's unloading and the sampling of the record (2.5 ms) shift the start
-    CHECK(first == Approx(t_mm).margin(0.01));
+    // 5 ms: the spring's unloading and the sampling of the record (2.5 ms) shift the start
+    // (measured: 0.7-1.9 ms late)
+    CHECK(first == Approx(t_mm).margin(0.005));
 }
 
 TEST_CASE("every backend: a y record moves a block as the x record rotated", "[engines][ground]") {
@@ -125,8 +127,8 @@ TEST_CASE("every backend: a y record moves a block as the x record rotated", "[e
     for (double c : across) drift = std::max(drift, std::abs(c));
     WARN(engine << ": slid " << peak << " m; x and y runs differ by " << worst << " m, cross drift " << drift << " m");
     CHECK(peak > 0.05);   // it did slide: (0.8 − 0.3) g over a half period is metres of travel
-    // 1 % of the travel: the engines' contact points and solver order are not exactly symmetric
-    // in x and y
-    CHECK(worst < 0.01 * peak);
-    CHECK(drift < 0.01 * peak);
+    // 1e-4 of the travel: the engines' contact points and solver order are not exactly symmetric
+    // in x and y (measured: dem and MuJoCo to rounding, Bullet and ODE 3e-6 and 1.3e-5 of it)
+    CHECK(worst < 1e-4 * peak);
+    CHECK(drift < 1e-4 * peak);
 }
