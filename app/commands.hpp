@@ -1,6 +1,7 @@
 #pragma once
 /// The subcommands of the cairn executable; each returns the process exit code.
 
+#include <map>
 #include <string>
 #include <vector>
 
@@ -144,6 +145,24 @@ struct ReplayOptions {
 
 /// `cairn replay`: the 3-D replay page of several runs side by side
 int replay_command(const ReplayOptions& options);
+
+/// Options of `cairn make`.
+struct MakeOptions {
+    /// generator → parameter name → value as typed (a number with an optional unit, e.g. "40cm")
+    std::map<std::string, std::map<std::string, std::string>> values;
+    std::string out;   ///< scene file written atomically; empty = standard output
+};
+
+/// the scene text of generator `kind` (arch, wall, column, tower, house) for the parameter values
+/// (missing ones take their defaults); throws cairn::Error naming a bad option and its value
+std::string make_scene_text(const std::string& kind, const std::map<std::string, std::string>& values);
+
+/// add `cairn make` and its generators to `app`, binding their options to `options`; returns the
+/// generators' subcommands
+std::vector<CLI::App*> add_make_commands(CLI::App& app, MakeOptions& options);
+
+/// `cairn make KIND`: write the generated scene (checked by the loader) to stdout or options.out
+int make_command(const std::string& kind, const MakeOptions& options);
 
 /// true when stderr is a terminal (progress lines make sense)
 bool stderr_is_terminal();

@@ -36,6 +36,7 @@ int main(int argc, char** argv) {
         ->check(CLI::IsMember({"rigid", "matched"}));
     run->add_flag("--vtk", job.vtk, "also write the run for ParaView into DIR/vtk/ (docs/visualisation.md)");
     run->add_flag("--replay", job.replay, "also write the interactive 3-D replay DIR/replay.html");
+    run->add_flag("--contacts", job.contacts, "also write every sample's contact points and forces to DIR/contacts.csv");
     run->add_flag("--quiet,-q", quiet, "no progress line and no summary");
     add_limit_options(*run, job.limits);
 
@@ -83,6 +84,9 @@ int main(int argc, char** argv) {
         ->take_all()
         ->allow_extra_args(false);
     compare->add_flag("--quiet,-q", cmp.quiet, "no progress lines");
+
+    MakeOptions make;
+    const auto make_cmds = add_make_commands(app, make);
 
     ValidateOptions val;
     auto* validate = app.add_subcommand("validate", "run the paper's cases on every backend and write the report");
@@ -197,6 +201,8 @@ int main(int argc, char** argv) {
             }
             return sweep_command(sweep);
         }
+        for (auto* sub : make_cmds)
+            if (sub->parsed()) return make_command(sub->get_name(), make);
         for (auto* sub : bench_cmd->get_subcommands())
             if (sub->parsed()) return bench_command(sub->get_name(), bench);
     } catch (const std::exception& e) {

@@ -8,6 +8,7 @@
 
 #include "error.hpp"
 #include "output/atomic_write.hpp"
+#include "output/contacts_csv.hpp"
 #include "output/run_record.hpp"
 #include "output/staged_dir.hpp"
 #include "progress_line.hpp"
@@ -49,6 +50,7 @@ namespace {
 constexpr const char* kTrajectory = "trajectory.csv";
 constexpr const char* kPartial = "trajectory.partial.csv";
 constexpr const char* kRecord = "run.json";
+constexpr const char* kContacts = "contacts.csv";
 
 /// set every free block's model from --model
 void apply_model(Scene& scene, const std::string& model) {
@@ -84,7 +86,7 @@ JobOutcome execute_run(const RunJob& job) {
         views = std::make_unique<RunViews>(scene, *backend, job.backend, job.vtk, job.replay);
         out = std::make_unique<StagedDir>(job.out_dir, job.force);
         // --force replaces a run's own files; anything else in DIR comes along (hard links)
-        out->carry_over({kTrajectory, kPartial, kRecord, kVtkDir, kReplayPage}, StagedDir::Carry::link);
+        out->carry_over({kTrajectory, kPartial, kRecord, kContacts, kVtkDir, kReplayPage}, StagedDir::Carry::link);
     } catch (const Error& e) {
         o.status = JobStatus::input_error;
         o.message = e.what();
@@ -94,12 +96,13 @@ JobOutcome execute_run(const RunJob& job) {
     request.model_override = job.model;
     request.options.contact_mode = job.contact;
     request.options.limits = job.limits;
-    request.options.record_contacts = job.vtk;
+    request.options.record_contacts = job.vtk || job.contacts;
 
     // the trajectory streams into the staging directory as the run goes; the set (trajectory and
     // run.json, written last) replaces DIR only when complete
     const fs::path dir = out->path();
     TrajectoryCsvFile csv((dir / kTrajectory).string());
+    ContactsCsvFile contacts((dir / kContacts).string(), *backend);
     RunResult result;
     // on a terminal, a progress line: simulated time, steps/s, time left
     ProgressLine progress(job.label, scene.run.duration);
@@ -107,6 +110,7 @@ JobOutcome execute_run(const RunJob& job) {
         // the 3-D views (--vtk, --replay) take the samples beside the trajectory
         views->open(dir.string());
         std::vector<SampleSink*> parts{&csv, views.get()};
+        if (job.contacts) parts.push_back(&contacts);
         if (job.progress) parts.push_back(&progress);
         TeeSink sinks(std::move(parts));
         result = run_scene(*backend, scene, request.options, sinks,

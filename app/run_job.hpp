@@ -23,6 +23,7 @@ struct RunJob {
     RunLimits limits;                     ///< --allow-large, --allow-unstable-dt, --memory-budget
     bool vtk = false;                     ///< write the VTK series for ParaView into out_dir/vtk/
     bool replay = false;                  ///< write the 3-D replay page out_dir/replay.html
+    bool contacts = false;                ///< write every sample's contact points to out_dir/contacts.csv
 };
 
 /// How a run ended.

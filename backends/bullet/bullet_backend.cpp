@@ -6,6 +6,7 @@
 #include <memory>
 #include <sstream>
 
+#include "applied_loads.hpp"
 #include "engine_settings.hpp"
 #include "error.hpp"
 #include "rigid_blocks.hpp"
@@ -236,13 +237,13 @@ void BulletBackend::build(const Scene& scene, const RunOptions& options) {
 }
 
 StepStatus BulletBackend::step() {
-    // lever arm (world) of a load's material point from its body's centre of mass
-    auto arm = [&](const LoadDef& l) {
-        btRigidBody* body = bodies_[l.block].get();
-        const RigidBlock& b = blocks_[l.block];
+    // lever arm (world) of a block's material point from its body's centre of mass
+    auto arm = [&](int block, const Vec3& point) {
+        btRigidBody* body = bodies_[block].get();
+        const RigidBlock& b = blocks_[block];
         Quat q = eig(body->getOrientation()) * Quat(b.principal.transpose());
         Vec3 com = eig(body->getCenterOfMassPosition());
-        return Vec3(block_point_world(b, com, q, l.point) - com);
+        return Vec3(block_point_world(b, com, q, point) - com);
     };
     // loads at their material points: the force through Bullet (cleared after every step), the
     // moment as this step's angular impulse added to the body's spin before the step. Bullet's
@@ -250,32 +251,24 @@ StepStatus BulletBackend::step() {
     // impulse to the velocity its contacts and friction act on but not the external TORQUE impulse,
     // which it adds after the solve: a load with a moment would then escape friction every step and
     // the block creep at 1.5 H dt/m under a sub-limit push at its base (7.4e-4 m/s at dt 1e-4 s).
-    auto apply_loads = [&]() {
-        for (const LoadDef& l : scene_.loads) {
-            double f = l.factor(t_);
-            if (f == 0.0) continue;
-            btRigidBody* body = bodies_[l.block].get();
-            body->applyCentralForce(bt(f * l.force));
-            const btVector3 moment = bt(arm(l).cross(f * l.force));
-            body->setAngularVelocity(body->getAngularVelocity() + body->getInvInertiaTensorWorld() * moment * dt_);
-        }
-    };
+    std::vector<AppliedLoad> loads;
+    applied_loads(scene_, t_, loads);
     // work of the loads: force at the start of the step times the point's mean velocity
-    auto load_power = [&]() {
-        double power = 0.0;
-        for (const LoadDef& l : scene_.loads) {
-            double f = l.factor(t_);
-            if (f == 0.0) continue;
-            btRigidBody* body = bodies_[l.block].get();
-            Vec3 v = eig(body->getLinearVelocity()) + eig(body->getAngularVelocity()).cross(arm(l));
-            power += f * l.force.dot(v);
-        }
-        return power;
+    auto power = [&]() {
+        return cairn::load_power(loads, [&](int block, const Vec3& point) {
+            btRigidBody* body = bodies_[block].get();
+            return Vec3(eig(body->getLinearVelocity()) + eig(body->getAngularVelocity()).cross(arm(block, point)));
+        });
     };
-    double p0 = load_power();
-    apply_loads();
+    double p0 = power();
+    for (const AppliedLoad& l : loads) {
+        btRigidBody* body = bodies_[l.block].get();
+        body->applyCentralForce(bt(l.force));
+        const btVector3 moment = bt(arm(l.block, l.point).cross(l.force));
+        body->setAngularVelocity(body->getAngularVelocity() + body->getInvInertiaTensorWorld() * moment * dt_);
+    }
     world_->stepSimulation(dt_, 1, dt_);
-    double p1 = load_power();
+    double p1 = power();
     t_ += dt_;
     external_work_ += 0.5 * (p0 + p1) * dt_;
     for (const auto& body : bodies_) {

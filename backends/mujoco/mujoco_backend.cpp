@@ -7,6 +7,7 @@
 #include <cstring>
 #include <sstream>
 
+#include "applied_loads.hpp"
 #include "engine_settings.hpp"
 #include "error.hpp"
 #include "geometry/hexahedron.hpp"
@@ -257,20 +258,18 @@ StepStatus MujocoBackend::step() {
     // loads at their material points: xfrc_applied persists, so it is rewritten every step
     std::memset(d_->xfrc_applied, 0, sizeof(mjtNum) * 6 * m_->nbody);
     const double t = d_->time;
-    double p0 = 0.0;
-    for (const LoadDef& l : scene_.loads) {
-        double f = l.factor(t);
-        int body = body_[l.block];
-        if (f == 0.0 || body == 0) continue;
-        Vec3 p = point(l.block, l.point);
-        Vec3 force = f * l.force;
-        Vec3 torque = (p - com(body)).cross(force);
+    std::vector<AppliedLoad> loads;
+    applied_loads(scene_, t, loads);
+    for (const AppliedLoad& l : loads) {
+        const int body = body_[l.block];
+        Vec3 torque = (point(l.block, l.point) - com(body)).cross(l.force);
         for (int k = 0; k < 3; ++k) {
-            d_->xfrc_applied[6 * body + k] += force[k];
+            d_->xfrc_applied[6 * body + k] += l.force[k];
             d_->xfrc_applied[6 * body + 3 + k] += torque[k];
         }
-        p0 += force.dot(point_velocity(l.block, p));
     }
+    auto velocity = [&](int block, const Vec3& p) { return point_velocity(block, point(block, p)); };
+    const double p0 = cairn::load_power(loads, velocity);
     if (matched_) matched_step();
     else mj_step(m_, d_);
     // mj_step computes positions before it integrates: bring the poses to the new qpos
@@ -279,12 +278,7 @@ StepStatus MujocoBackend::step() {
         const double k = std::exp(-scene_.damping.alpha * dt_);
         for (int i = 0; i < m_->nv; ++i) d_->qvel[i] *= k;
     }
-    double p1 = 0.0;
-    for (const LoadDef& l : scene_.loads) {
-        double f = l.factor(t);
-        if (f == 0.0 || body_[l.block] == 0) continue;
-        p1 += f * l.force.dot(point_velocity(l.block, point(l.block, l.point)));
-    }
+    const double p1 = cairn::load_power(loads, velocity);
     external_work_ += 0.5 * (p0 + p1) * dt_;
     if (d_->warning[mjWARN_BADQACC].number > 0 || d_->warning[mjWARN_BADQPOS].number > 0 ||
         d_->warning[mjWARN_BADQVEL].number > 0) {

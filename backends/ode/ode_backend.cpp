@@ -11,6 +11,7 @@
 #include <memory>
 #include <sstream>
 
+#include "applied_loads.hpp"
 #include "engine_settings.hpp"
 #include "error.hpp"
 #include "hexahedron_contact.hpp"
@@ -382,16 +383,14 @@ void OdeBackend::collide(dGeomID ga, dGeomID gb) {
 }
 
 double OdeBackend::load_power() const {
-    double power = 0.0;
-    for (const LoadDef& l : scene_.loads) {
-        double f = l.factor(t_);
-        if (f == 0.0 || !bodies_[l.block]) continue;
-        Vec3 p = block_point_world(blocks_[l.block], com(l.block), orientation(l.block), l.point);
+    std::vector<AppliedLoad> loads;
+    applied_loads(scene_, t_, loads);
+    return cairn::load_power(loads, [&](int block, const Vec3& point) {
+        Vec3 p = block_point_world(blocks_[block], com(block), orientation(block), point);
         dVector3 v;
-        dBodyGetPointVel(bodies_[l.block], p.x(), p.y(), p.z(), v);
-        power += f * l.force.dot(Vec3(v[0], v[1], v[2]));
-    }
-    return power;
+        dBodyGetPointVel(bodies_[block], p.x(), p.y(), p.z(), v);
+        return Vec3(v[0], v[1], v[2]);
+    });
 }
 
 void OdeBackend::abandon_world() {
@@ -405,12 +404,11 @@ void OdeBackend::abandon_world() {
 StepStatus OdeBackend::step() {
     if (faulted_) return StepStatus::unstable;
     // loads at their material points (ODE clears accumulated forces after each step)
-    for (const LoadDef& l : scene_.loads) {
-        double f = l.factor(t_);
-        if (f == 0.0 || !bodies_[l.block]) continue;
+    std::vector<AppliedLoad> loads;
+    applied_loads(scene_, t_, loads);
+    for (const AppliedLoad& l : loads) {
         Vec3 p = block_point_world(blocks_[l.block], com(l.block), orientation(l.block), l.point);
-        Vec3 force = f * l.force;
-        dBodyAddForceAtPos(bodies_[l.block], force.x(), force.y(), force.z(), p.x(), p.y(), p.z());
+        dBodyAddForceAtPos(bodies_[l.block], l.force.x(), l.force.y(), l.force.z(), p.x(), p.y(), p.z());
     }
     double p0 = load_power();
     contact_energy_ = 0.0;

@@ -26,7 +26,7 @@ struct WallSetup {
 std::vector<WallSetup> wall_setups();
 
 /// a wall of `courses` × `per_course` 0.4 × 0.2 × 0.2 m bricks in running bond on a fixed 5 × 1 ×
-/// 0.5 m base (the builder of tests/backends/engines), kn = ks = setup.kn, μ = 0.6, dt = setup.dt
+/// 0.5 m base (add_wall, odd courses shifted whole), kn = ks = setup.kn, μ = 0.6, dt = setup.dt
 Scene wall_scene(int courses, int per_course, const WallSetup& setup);
 
 /// One backend on one setup.

@@ -36,12 +36,15 @@ std::string fixed3(double x) {
 
 double ground_multiplier(const Scene& scene, double t) {
     if (!scene.ground_motion) return 0.0;
-    return scene.ground_motion->acceleration.at(t - scene.ground_motion->start) / gravity(scene);
+    return scene.ground_motion->components.front().acceleration.at(t - scene.ground_motion->start) / gravity(scene);
 }
 
 oracle::BlockStack scene_stack(const Scene& scene) {
     if (!scene.ground_motion) throw Error(scene.source + ": a pushover reference needs a [ground_motion] table");
-    Vec3 along = scene.ground_motion->direction - scene.ground_motion->direction.dot(scene.gravity.normalized()) * scene.gravity.normalized();
+    if (scene.ground_motion->components.size() != 1)
+        throw Error(scene.source + ": a pushover reference needs a [ground_motion] of one record");
+    const Vec3 dir = scene.ground_motion->components.front().direction;
+    Vec3 along = dir - dir.dot(scene.gravity.normalized()) * scene.gravity.normalized();
     if (along.norm() < 1e-9) throw Error(scene.source + ": a pushover reference needs a horizontal [ground_motion] direction");
     along.normalize();
     const Vec3 up = -scene.gravity.normalized(), across = up.cross(along);

@@ -105,6 +105,7 @@ Document build_report(const std::vector<CaseResult>& cases, const FigureSet& fig
                 " pass, " + std::to_string(m_miss) + " miss, " + std::to_string(m_nc) + " not comparable. " +
                 fixed_text(ctx.wall_seconds, 1) + " s wall on " + std::to_string(ctx.jobs) + " threads. Command: " + ctx.command);
     if (!figures.note.empty()) d.paragraph("Figures: " + figures.note);
+    d.contents();   // links to every section and case below, the verdict grid first
 
     // the grid: cases down, variants across (in order of first appearance), each cell links to its case
     d.heading(2, "Verdict");

@@ -41,9 +41,12 @@ TrajectoryReader::TrajectoryReader(const std::string& run_dir) {
 }
 
 std::size_t TrajectoryReader::column(const std::string& name, const std::string& hint) const {
-    // a column name without its unit ("t [s]" -> "t")
-    for (std::size_t i = 0; i < header_.size(); ++i)
-        if (header_[i].substr(0, header_[i].find(' ')) == name) return i;
+    // a column name without its unit ("t [s]" -> "t"; a name without one is kept)
+    for (std::size_t i = 0; i < header_.size(); ++i) {
+        const std::string& h = header_[i];
+        const auto open = h.rfind(" [");
+        if ((open != std::string::npos && h.back() == ']' ? h.substr(0, open) : h) == name) return i;
+    }
     throw Error(path_ + ": no column " + name + hint);
 }
 

@@ -8,15 +8,17 @@
 namespace cairn {
 
 std::vector<std::string> trajectory_columns(const Scene& scene) {
-    std::vector<std::string> cols{"t"};
+    // every name ends in its unit in brackets ("[-]": dimensionless)
+    std::vector<std::string> cols{"t [s]"};
     for (const auto& p : scene.probes)
-        for (const char* c : {".x", ".y", ".z"}) cols.push_back(p.name + c);
+        for (const char* c : {".x [m]", ".y [m]", ".z [m]"}) cols.push_back(p.name + c);
     for (const auto& b : scene.blocks) {
         if (b.fixed) continue;
-        for (const char* c : {".x", ".y", ".z", ".qw", ".qx", ".qy", ".qz"}) cols.push_back(b.name + c);
+        for (const char* c : {".x [m]", ".y [m]", ".z [m]", ".qw [-]", ".qx [-]", ".qy [-]", ".qz [-]"})
+            cols.push_back(b.name + c);
     }
-    for (const char* c : {"E_kinetic", "E_potential", "E_contact", "E_strain", "E_dissipated",
-                          "W_external", "E_balance_error", "contacts"})
+    for (const char* c : {"E_kinetic [J]", "E_potential [J]", "E_contact [J]", "E_strain [J]", "E_dissipated [J]",
+                          "W_external [J]", "E_balance_error [J]", "contacts [-]"})
         cols.push_back(c);
     return cols;
 }

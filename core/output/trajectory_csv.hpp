@@ -13,7 +13,8 @@
 
 namespace cairn {
 
-/// column names: t, P.x,P.y,P.z per probe, B.x..B.qz per free block, energies, contacts
+/// column names, each with its unit in brackets: t [s], P.x [m] … per probe, B.x [m] … B.qz [-] per
+/// free block, energies and the balance error [J], contacts [-]
 std::vector<std::string> trajectory_columns(const Scene& scene);
 
 /// Writes a trajectory row by row: the header on construction, then one row per sample with 17

@@ -1,9 +1,10 @@
 #include "scene/arch_builder.hpp"
 
 #include <cmath>
-#include <cstdio>
+#include <utility>
 
 #include "scene/scene_builder.hpp"
+#include "scene/scene_toml.hpp"
 
 namespace cairn {
 
@@ -16,10 +17,32 @@ Vec3 ring_point(double r, double a, double y) { return {-r * std::cos(a), y, r *
 Vec3 abutment_size(const ArchSpec& arch) { return {std::max(1.0, 2.0 * arch.thickness), arch.depth + 0.5, 0.5}; }
 Vec3 abutment_centre(const ArchSpec& arch, int side) { return {side * arch.radius, 0.0, -0.25}; }
 
+/// angle of the left springing joint from the −x axis, rad
+double springing_angle(const ArchSpec& arch) { return 0.5 * (M_PI - arch.angle); }
+
+/// a segmental arch's fixed springer on side s (−1 left, +1 right): its top face is the springing
+/// joint, its sides vertical, its bottom 0.5 m below the intrados springing point; hex8 order as a
+/// voussoir's (corners 0-3 on the intrados side), so that the volume comes out positive
+Corners springer(const ArchSpec& arch, int side) {
+    const double a = springing_angle(arch), y = 0.5 * arch.depth;
+    const double ri = arch.radius - 0.5 * arch.thickness, re = arch.radius + 0.5 * arch.thickness;
+    const Vec3 pi = ring_point(ri, a, 0.0), pe = ring_point(re, a, 0.0);
+    const double zb = pi.z() - 0.5;
+    Corners c = {Vec3(pi.x(), -y, zb), Vec3(pi.x(), -y, pi.z()), Vec3(pi.x(), y, pi.z()), Vec3(pi.x(), y, zb),
+                 Vec3(pe.x(), -y, zb), Vec3(pe.x(), -y, pe.z()), Vec3(pe.x(), y, pe.z()), Vec3(pe.x(), y, zb)};
+    if (side > 0) {
+        // mirror in x, then swap bottom and joint corners to keep the orientation
+        for (Vec3& p : c) p.x() = -p.x();
+        for (int k : {0, 2, 4, 6}) std::swap(c[size_t(k)], c[size_t(k + 1)]);
+    }
+    return c;
+}
+
 }  // namespace
 
 Corners arch_voussoir(const ArchSpec& arch, int i) {
-    const double a0 = M_PI * i / arch.voussoirs, a1 = M_PI * (i + 1) / arch.voussoirs;
+    const double s = springing_angle(arch);
+    const double a0 = s + arch.angle * i / arch.voussoirs, a1 = s + arch.angle * (i + 1) / arch.voussoirs;
     const double ri = arch.radius - 0.5 * arch.thickness, re = arch.radius + 0.5 * arch.thickness;
     const double y = 0.5 * arch.depth;
     return {ring_point(ri, a0, -y), ring_point(ri, a1, -y), ring_point(ri, a1, y), ring_point(ri, a0, y),
@@ -35,30 +58,26 @@ int add_arch(Scene& scene, const ArchSpec& arch) {
         b.corners = arch_voussoir(arch, i);
         scene.blocks.push_back(b);
     }
-    add_box(scene, "left", abutment_size(arch), abutment_centre(arch, -1), true);
-    add_box(scene, "right", abutment_size(arch), abutment_centre(arch, +1), true);
+    if (arch.angle >= M_PI) {
+        add_box(scene, "left", abutment_size(arch), abutment_centre(arch, -1), true);
+        add_box(scene, "right", abutment_size(arch), abutment_centre(arch, +1), true);
+        return first;
+    }
+    for (int side : {-1, 1}) {
+        BlockDef b;
+        b.name = side < 0 ? "left" : "right";
+        b.shape = Shape::hexahedron;
+        b.corners = springer(arch, side);
+        b.fixed = true;
+        scene.blocks.push_back(b);
+    }
     return first;
 }
 
 std::string arch_blocks_toml(const ArchSpec& arch, const std::string& material) {
-    std::string out;
-    char buf[160];
-    for (int i = 0; i < arch.voussoirs; ++i) {
-        out += "[blocks.V" + std::to_string(i + 1) + "]\nshape = \"hexahedron\"\ncorners = [\n";
-        for (const Vec3& c : arch_voussoir(arch, i)) {
-            std::snprintf(buf, sizeof buf, "  [%.9f, %.9f, %.9f],\n", c.x(), c.y(), c.z());
-            out += buf;
-        }
-        out += "]\nmaterial = \"" + material + "\"\n\n";
-    }
-    for (int side : {-1, 1}) {
-        const Vec3 s = abutment_size(arch), c = abutment_centre(arch, side);
-        std::snprintf(buf, sizeof buf,
-                      "[blocks.%s]\nsize = [%.3f, %.3f, %.3f]      # m\nposition = [%.9f, %.3f, %.3f]\nmaterial = \"%s\"\nfixed = true\n\n",
-                      side < 0 ? "left" : "right", s.x(), s.y(), s.z(), c.x(), c.y(), c.z(), material.c_str());
-        out += buf;
-    }
-    return out;
+    Scene scene;
+    add_arch(scene, arch);
+    return blocks_toml(scene, material);
 }
 
 }  // namespace cairn

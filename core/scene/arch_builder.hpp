@@ -1,7 +1,8 @@
 #pragma once
-/// A semicircular arch of N voussoirs with radial joints (general hexahedra) on two fixed
-/// abutments: in code for tests, and as the TOML text of the shipped arch scenes.
+/// A semicircular or segmental arch of N voussoirs with radial joints (general hexahedra) on two
+/// fixed springers: in code for tests, as the TOML text of the shipped arch scenes, `cairn make arch`.
 
+#include <cmath>
 #include <string>
 #include <vector>
 
@@ -16,17 +17,21 @@ struct ArchSpec {
     double radius = 2.0;         ///< centreline radius R, m
     double thickness = 0.2;      ///< radial thickness t, m (< 2R)
     double depth = 0.5;          ///< along y, m
+    double angle = M_PI;         ///< angle the arch subtends, rad, in (0, π]; π = semicircular
 };
 
 /// the world corners of voussoir i (0 … N−1), hex8 order: corners 0-3 on the intrados, 4-7 on the
-/// extrados; voussoir i spans the angles [iπ/N, (i+1)π/N] from the left springing (x = −R, z = 0)
+/// extrados; voussoir i spans the angles [a0 + iβ/N, a0 + (i+1)β/N] (β = angle, a0 = (π − β)/2)
+/// measured from the −x axis about the centre (0, 0, 0)
 Corners arch_voussoir(const ArchSpec& arch, int i);
 
-/// append the voussoirs V1 … VN (hexahedra, material 0) and the fixed abutments `left` and
-/// `right` (1 × (depth + 0.5) × 0.5 m boxes under the springings); returns the index of V1
+/// append the voussoirs V1 … VN (hexahedra, material 0) and the fixed springers `left` and
+/// `right`: for a semicircular arch max(1, 2t) × (depth + 0.5) × 0.5 m boxes under the springings;
+/// for a segmental one hexahedra whose top is the inclined springing joint and whose bottom lies
+/// 0.5 m below the intrados springing point; returns the index of V1
 int add_arch(Scene& scene, const ArchSpec& arch);
 
-/// the [blocks.*] tables of add_arch as TOML text (corners to 1e-9 m), for scene files
+/// the [blocks.*] tables of add_arch as TOML text (blocks_toml), for scene files
 std::string arch_blocks_toml(const ArchSpec& arch, const std::string& material);
 
 }  // namespace cairn

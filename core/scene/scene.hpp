@@ -96,13 +96,19 @@ struct TimeSeries {
     double at(double t) const;
 };
 
-/// Ground acceleration: the fixed blocks are the ground, and the scene is solved in the ground's
-/// frame, so every free block feels the inertial force −m·a_g(t) (loads generated on load).
-struct GroundMotion {
+/// One component of the ground acceleration: a record along a fixed world direction.
+struct GroundComponent {
     TimeSeries acceleration;          ///< m/s² along `direction` (units and scale applied)
     Vec3 direction = Vec3::UnitX();   ///< unit vector, world
-    double start = 0.0;               ///< s: the record's t = 0 falls at this scene time
-    std::string source;               ///< the CSV file it came from, or "inline"
+    std::string source;               ///< the CSV file (and column) it came from, or "inline"
+};
+
+/// Ground acceleration: the fixed blocks are the ground, and the scene is solved in the ground's
+/// frame, so every free block feels the inertial force −m·a_g(t) (loads generated on load); a
+/// vertical component changes the effective gravity to g + a_z.
+struct GroundMotion {
+    std::vector<GroundComponent> components;   ///< one record along `direction`, or up to 3 along x, y, z
+    double start = 0.0;               ///< s: the records' t = 0 falls at this scene time
 };
 
 /// A force on a block at a material point; its direction is fixed in the world.

@@ -59,12 +59,19 @@ nlohmann::json scene_to_json(const Scene& scene) {
                              {"point", vec(l.point)}, {"ramp", l.ramp}, {"start", l.start}});
     json ground = nullptr;
     if (const auto& g = scene.ground_motion) {
-        double peak = 0.0;
-        for (double a : g->acceleration.value) peak = std::max(peak, std::abs(a));
-        ground = {{"source", g->source}, {"direction", vec(g->direction)}, {"start", g->start},
-                  {"samples", g->acceleration.time.size()},
-                  {"duration", g->acceleration.time.back() - g->acceleration.time.front()},
-                  {"peak_acceleration", peak}};
+        // one entry per component; the first one's fields also at the top (older readers)
+        json components = json::array();
+        for (const GroundComponent& c : g->components) {
+            double peak = 0.0;
+            for (double a : c.acceleration.value) peak = std::max(peak, std::abs(a));
+            components.push_back({{"source", c.source}, {"direction", vec(c.direction)},
+                                  {"samples", c.acceleration.time.size()},
+                                  {"duration", c.acceleration.time.back() - c.acceleration.time.front()},
+                                  {"peak_acceleration", peak}});
+        }
+        ground = components.front();
+        ground["start"] = g->start;
+        ground["components"] = components;
     }
     json probes = json::array();
     for (const auto& p : scene.probes)

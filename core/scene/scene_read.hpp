@@ -20,8 +20,10 @@ constexpr double kOverlapTolerance = 0.01;
 void check_overlaps(const TableReader& root, const Scene& scene);
 /// [loads.NAME] (needs scene.blocks)
 void read_loads(const TableReader& root, Scene& scene);
-/// [ground_motion] (needs scene.blocks and scene.source): adds one body load per free block
+/// [ground_motion] (needs scene.blocks and scene.source): adds one body load per free block and component
 void read_ground_motion(const TableReader& root, Scene& scene);
+/// the body loads −m·a_g(t)·direction of scene.ground_motion, one per free block and component
+void add_ground_motion_loads(Scene& scene);
 /// [probes.NAME] (needs scene.blocks)
 void read_probes(const TableReader& root, Scene& scene);
 

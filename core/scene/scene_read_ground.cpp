@@ -1,5 +1,6 @@
-// [ground_motion]: a ground acceleration record, from a CSV file or inline arrays, turned into
-// one inertial body load −m·a_g(t) per free block.
+// [ground_motion]: ground acceleration records, one along a direction or one per world axis, from
+// CSV files or inline arrays, turned into one inertial body load −m·a_g(t) per free block and
+// component: every backend applies them as loads, with their work in W_external.
 #define CSV_IO_NO_THREAD
 #include <limits>   // libfccp's csv.h uses std::numeric_limits without including it
 #if defined(__GNUC__) && !defined(__clang__)   // a GCC-only warning; clang does not know it
@@ -57,15 +58,10 @@ TimeSeries read_csv(const Item& file_item, const std::string& path, const std::s
     return s;
 }
 
-}  // namespace
-
-void read_ground_motion(const TableReader& root, Scene& scene) {
-    Item section = root.get("ground_motion");
-    if (!section) return;
-    TableReader g = sub_table(root, "ground_motion",
-                              {"file", "time_column", "acceleration_column", "time", "acceleration",
-                               "units", "scale", "direction", "start"});
-    GroundMotion gm;
+// one acceleration record from table `g` (a file or inline arrays, units, scale), in m/s² and
+// multiplied by `outer_scale` (the top-level scale when `g` is a component table)
+GroundComponent read_record(const TableReader& g, const Scene& scene, double outer_scale, const Item& outer_scale_item) {
+    GroundComponent gm;
     Item file = g.get("file"), time = g.get("time"), accel = g.get("acceleration");
     if (file && (time || accel)) file.fail("give a file or inline time and acceleration arrays, not both");
     if (file) {
@@ -75,7 +71,7 @@ void read_ground_motion(const TableReader& root, Scene& scene) {
         if (Item it = g.get("time_column")) tcol = it.string();
         if (Item it = g.get("acceleration_column")) acol = it.string();
         gm.acceleration = read_csv(file, p.lexically_normal().string(), tcol, acol);
-        gm.source = p.lexically_normal().string();
+        gm.source = p.lexically_normal().string() + " (" + acol + ")";
     } else {
         if (!time) g.require("file");   // reports the missing key
         Item a = g.require("acceleration");
@@ -99,8 +95,8 @@ void read_ground_motion(const TableReader& root, Scene& scene) {
     } else if (file) {
         unit = 9.81;   // the default column accel_g is in g
     }
-    double scale = 1.0;
-    if (Item it = g.get("scale")) scale = it.number();
+    double scale = outer_scale;
+    if (Item it = g.get("scale")) scale *= it.number();
     // every sample, the first too, must be finite as the engines will see it
     for (size_t i = 0; i < gm.acceleration.value.size(); ++i) {
         const double raw = gm.acceleration.value[i], v = raw * unit * scale;
@@ -108,36 +104,77 @@ void read_ground_motion(const TableReader& root, Scene& scene) {
             gm.acceleration.value[i] = v;
             continue;
         }
-        const Item scale_item = g.get("scale");
+        const Item scale_item = g.get("scale") ? g.get("scale") : outer_scale_item;
         const Item culprit = std::isfinite(raw) && scale_item ? scale_item : (file ? file : accel);
         culprit.fail("sample " + std::to_string(i) + ": acceleration " + message_number(raw, 6) + " × units " +
                      message_number(unit, 6) + " × scale " + message_number(scale, 6) + " is not finite");
     }
-    if (Item it = g.get("direction")) {
-        gm.direction = it.vec3();
-        it.check(gm.direction.norm() > 0.0, "the direction must not be zero");
-        gm.direction.normalize();
+    return gm;
+}
+
+}  // namespace
+
+void read_ground_motion(const TableReader& root, Scene& scene) {
+    Item section = root.get("ground_motion");
+    if (!section) return;
+    static const std::vector<std::string> record_keys = {"file", "time_column", "acceleration_column", "time",
+                                                         "acceleration", "units", "scale"};
+    std::vector<std::string> top_keys = record_keys;
+    for (const char* k : {"direction", "start", "x", "y", "z"}) top_keys.push_back(k);
+    TableReader g = sub_table(root, "ground_motion", top_keys);
+    GroundMotion gm;
+    const bool per_axis = g.get("x") || g.get("y") || g.get("z");
+    if (per_axis) {
+        // one record per world axis; the top level holds only start and a common scale
+        for (const auto& k : record_keys)
+            if (k != "scale" && g.get(k)) g.get(k).fail("give one record, or records per axis (x, y, z), not both");
+        if (Item d = g.get("direction")) d.fail("the per-axis records (x, y, z) have their own directions");
+        const Item outer = g.get("scale");
+        const double outer_scale = outer ? outer.number() : 1.0;
+        const char* axes[3] = {"x", "y", "z"};
+        for (int a = 0; a < 3; ++a) {
+            if (!g.get(axes[a])) continue;
+            GroundComponent c = read_record(sub_table(g, axes[a], record_keys), scene, outer_scale, outer);
+            c.direction = Vec3::Unit(a);
+            gm.components.push_back(std::move(c));
+        }
+    } else {
+        GroundComponent c = read_record(g, scene, 1.0, Item(root.sources(), nullptr, ""));
+        if (Item it = g.get("direction")) {
+            c.direction = it.vec3();
+            it.check(c.direction.norm() > 0.0, "the direction must not be zero");
+            c.direction.normalize();
+        }
+        gm.components.push_back(std::move(c));
     }
     if (Item it = g.get("start")) {
         gm.start = it.number();
         it.check(gm.start >= 0.0, "must be >= 0");
     }
-    // the inertial force on each free block: −m·a_g(t)·direction, spread like its mass
-    auto history = std::make_shared<const TimeSeries>(gm.acceleration);
-    for (size_t b = 0; b < scene.blocks.size(); ++b) {
-        const BlockDef& def = scene.blocks[b];
-        if (def.fixed) continue;
-        MassProperties mp = mass_properties(def.corners, scene.materials[size_t(def.material)].density);
-        LoadDef l;
-        l.block = int(b);
-        l.force = -mp.mass * gm.direction;
-        l.point = mp.centre;
-        l.start = gm.start;
-        l.history = history;
-        l.body = true;
-        scene.loads.push_back(l);
-    }
     scene.ground_motion = gm;
+    add_ground_motion_loads(scene);
+}
+
+void add_ground_motion_loads(Scene& scene) {
+    if (!scene.ground_motion) return;
+    // the inertial force on each free block: −m·a_g(t) per component, spread like its mass; a
+    // vertical component adds to gravity (a_z > 0, the ground accelerating up, presses harder)
+    for (const GroundComponent& c : scene.ground_motion->components) {
+        auto history = std::make_shared<const TimeSeries>(c.acceleration);
+        for (size_t b = 0; b < scene.blocks.size(); ++b) {
+            const BlockDef& def = scene.blocks[b];
+            if (def.fixed) continue;
+            MassProperties mp = mass_properties(def.corners, scene.materials[size_t(def.material)].density);
+            LoadDef l;
+            l.block = int(b);
+            l.force = -mp.mass * c.direction;
+            l.point = mp.centre;
+            l.start = scene.ground_motion->start;
+            l.history = history;
+            l.body = true;
+            scene.loads.push_back(l);
+        }
+    }
 }
 
 }  // namespace scene_detail

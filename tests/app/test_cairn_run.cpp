@@ -21,8 +21,8 @@ TEST_CASE("cairn run twice gives byte-identical trajectories", "[app]") {
     REQUIRE(a.exit_code == 0);
     REQUIRE(b.exit_code == 0);
     const std::string csv = read_file(dir / "a" / "trajectory.csv");
-    CHECK_THAT(csv, StartsWith("t,"));
-    CHECK_THAT(csv, Contains("A.x,A.y,A.z,A.qw,A.qx,A.qy,A.qz,E_kinetic"));
+    CHECK_THAT(csv, StartsWith("t [s],"));
+    CHECK_THAT(csv, Contains("A.x [m],A.y [m],A.z [m],A.qw [-],A.qx [-],A.qy [-],A.qz [-],E_kinetic [J]"));
     CHECK(csv == read_file(dir / "b" / "trajectory.csv"));
 
     const auto record = nlohmann::json::parse(read_file(dir / "a" / "run.json"));

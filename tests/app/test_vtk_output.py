@@ -37,9 +37,9 @@ def run(name, *args, backend="dem", vtk=True):
 
 
 def trajectory(out):
-    """columns of trajectory.csv by name (a unit after the name, 't [s]', is dropped)"""
+    """columns of trajectory.csv by name (the unit after the name, 't [s]', is dropped)"""
     with open(os.path.join(out, "trajectory.csv")) as f:
-        head = [h.split(" ")[0] for h in f.readline().strip().split(",")]
+        head = [h.rsplit(" [", 1)[0] for h in f.readline().strip().split(",")]
         rows = np.array([[float(x) for x in line.split(",")] for line in f if line.strip()])
     return {h: rows[:, i] for i, h in enumerate(head)}
 

@@ -21,14 +21,14 @@ std::vector<std::string> split(const std::string& line) {
 
 }  // namespace
 
-TEST_CASE("trajectory columns: t, probes, free blocks, energies, contacts", "[output]") {
+TEST_CASE("trajectory columns: t, probes, free blocks, energies, contacts, each with its unit", "[output]") {
     Scene scene = testing::ballistic_scene();
     scene.probes.push_back({"Q", 1, Vec3::Zero()});   // a probe on the fixed block is recorded too
     const std::vector<std::string> expected{
-        "t",         "P.x",         "P.y",          "P.z",      "Q.x",          "Q.y",
-        "Q.z",       "A.x",         "A.y",          "A.z",      "A.qw",         "A.qx",
-        "A.qy",      "A.qz",        "E_kinetic",    "E_potential", "E_contact", "E_strain",
-        "E_dissipated", "W_external", "E_balance_error", "contacts"};
+        "t [s]",     "P.x [m]",     "P.y [m]",      "P.z [m]",  "Q.x [m]",      "Q.y [m]",
+        "Q.z [m]",   "A.x [m]",     "A.y [m]",      "A.z [m]",  "A.qw [-]",     "A.qx [-]",
+        "A.qy [-]",  "A.qz [-]",    "E_kinetic [J]", "E_potential [J]", "E_contact [J]", "E_strain [J]",
+        "E_dissipated [J]", "W_external [J]", "E_balance_error [J]", "contacts [-]"};
     CHECK(trajectory_columns(scene) == expected);
 }
 

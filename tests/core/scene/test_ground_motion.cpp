@@ -30,7 +30,7 @@ TEST_CASE("the El Centro record loads from CSV in g, relative to the scene file"
     const std::string dir = std::string(CAIRN_SOURCE_DIR) + "/scenarios/earthquake/";
     Scene s = parse_scene(with_extra("[ground_motion]\nfile = \"../data/elcentro_1940_ns.csv\"\nscale = 0.5\n"),
                           dir + "t.toml");
-    const auto& a = s.ground_motion->acceleration;
+    const auto& a = s.ground_motion->components.at(0).acceleration;
     // every data row: 0 to 31.18 s at 0.02 s is 1560 samples (the file's comment says 1559)
     REQUIRE(a.time.size() == 1560);
     CHECK(a.time.back() == Approx(31.18));
@@ -79,4 +79,31 @@ TEST_CASE("every sample, the first too, is finite after units and scale", "[scen
         msg = e.what();
     }
     CHECK_THAT(msg, Contains("ground_motion.file = \"badtime.csv\": ") && Contains("(sample 0"));
+}
+
+TEST_CASE("per-axis records give one load per free block and axis, with a common scale", "[scene][ground]") {
+    Scene s = parse_scene(with_extra("[ground_motion]\nscale = 2\nstart = 0.5\n"
+                                     "[ground_motion.x]\ntime = [0, 1]\nacceleration = [1, 1]\nunits = \"m/s2\"\n"
+                                     "[ground_motion.z]\ntime = [0, 1]\nacceleration = [0.1, 0.3]\nunits = \"g\"\nscale = 0.5\n"),
+                          "t.toml");
+    REQUIRE(s.ground_motion);
+    REQUIRE(s.ground_motion->components.size() == 2);
+    CHECK(s.ground_motion->components[1].direction == Vec3::UnitZ());
+    REQUIRE(s.loads.size() == 2);   // A along x, A along z
+    CHECK(s.loads[0].force.isApprox(Vec3(-2600.0, 0, 0)));
+    CHECK(s.loads[1].force.isApprox(Vec3(0, 0, -2600.0)));
+    CHECK(s.loads[0].factor(0.4) == 0.0);                      // before start
+    CHECK(s.loads[0].factor(1.0) == Approx(2.0));              // 1 m/s² × 2
+    // z: 0.2 g at the record's 0.5 s, × 2 × 0.5
+    CHECK(s.loads[1].factor(1.0) == Approx(0.2 * 9.81));
+    CHECK(scene_to_json(s)["ground_motion"]["components"].size() == 2);
+}
+
+TEST_CASE("a record at the top and per axis together are refused", "[scene][ground]") {
+    CHECK_THAT(error_of(with_extra("[ground_motion]\ntime = [0, 1]\n[ground_motion.y]\ntime = [0, 1]\nacceleration = [0, 1]\n")),
+               Contains("bad.toml:21: ground_motion.time = [0, 1]: give one record, or records per axis (x, y, z), not both"));
+    CHECK_THAT(error_of(with_extra("[ground_motion]\ndirection = [0, 1, 0]\n[ground_motion.y]\ntime = [0, 1]\nacceleration = [0, 1]\n")),
+               Contains("ground_motion.direction"));
+    CHECK_THAT(error_of(with_extra("[ground_motion.z]\ntime = [0, 1]\nacceleration = [0, 1]\nunits = \"gal\"\n")),
+               Contains("ground_motion.z.units = \"gal\""));
 }
