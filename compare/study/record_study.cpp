@@ -55,7 +55,10 @@ RecordResult run_record_study(const RecordSetup& s, const RecordBackendMaker& ma
     const Scene scene = parse_scene(s.scene_text, s.scene_source, ov);
     if (!scene.ground_motion) throw Error(s.scene_source + ": the record study needs a [ground_motion]");
     const GroundMotion& gm = *scene.ground_motion;
-    const double sign = gm.direction.x();
+    if (gm.components.size() != 1)
+        throw Error(s.scene_source + ": the record study needs one ground motion record (along x)");
+    const GroundComponent& record = gm.components.front();
+    const double sign = record.direction.x();
     if (std::abs(std::abs(sign) - 1.0) > 1e-12)
         throw Error(s.scene_source + ": ground_motion.direction: the record study needs the motion along x");
     const auto rb = rocking_block_of(scene);
@@ -67,12 +70,12 @@ RecordResult run_record_study(const RecordSetup& s, const RecordBackendMaker& ma
     res.p = o.p();
     res.r = o.housner_restitution();
     res.duration = scene.run.duration;
-    res.record = gm.source;
+    res.record = record.source;
     const long n = long(std::floor(res.duration / s.output_interval + 1e-9));
     if (n < 1 || n > 10000000L) throw Error("record study: between 1 and 1e7 compared samples are needed");
     for (long i = 0; i <= n; ++i) res.times.push_back(double(i) * s.output_interval);
     // the record in the oracle's frame: along +x, from the scene's start on
-    TimeSeries rec = gm.acceleration;
+    TimeSeries rec = record.acceleration;
     for (auto& t : rec.time) t += gm.start;
     for (auto& v : rec.value) v *= sign;
     res.histories.push_back(oracle_history(o, rec, 1.0, res.r, res.times, "oracle"));

@@ -163,8 +163,9 @@ Sweep expand_sweep(const SweepPlan& plan, const std::string& records_dir_arg) {
                 unscaled.push_back("ground_motion.scale=1.0");
                 const Scene scene = load_scene(scene_path, parsed(unscaled));
                 if (block.empty()) outcome_block(scene, plan, name, block, angle);
-                if (scene.ground_motion)
-                    for (double a : scene.ground_motion->acceleration.value) pga = std::max(pga, std::abs(a) / kG);
+                if (scene.ground_motion)   // the largest component's peak
+                    for (const auto& c : scene.ground_motion->components)
+                        for (double a : c.acceleration.value) pga = std::max(pga, std::abs(a) / kG);
             } catch (const Error& e) {
                 throw Error(plan.path + ": scene " + name + " with record " + rec.name + ": " + e.what());
             }

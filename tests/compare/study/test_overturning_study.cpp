@@ -88,12 +88,13 @@ TEST_CASE("overturning: a pulse scene carries the pulse as its ground motion", "
         CHECK(pulse.omega == Approx(5.0 * o.p()).epsilon(1e-12));
         const Scene scene = pulse_scene(t, pulse);
         REQUIRE(scene.ground_motion);
+        REQUIRE(scene.ground_motion->components.size() == 1);
         CHECK(scene.run.duration == Approx(pulse.duration() + t.tail).epsilon(1e-9));
         // 800 linear pieces per pulse: within (2π/800)²/8 of a_p for the sine (ricker: its own
         // curvature, at most 1.5 ω² a_p, over duration/800 = 0.02/ω: 7.5e-5 a_p)
         for (int i = 1; i < 50; ++i) {
             const double tt = pulse.duration() * (i + 0.37) / 50.0;
-            CHECK(std::abs(scene.ground_motion->acceleration.at(tt) - pulse.at(tt)) < 1e-4 * pulse.amplitude);
+            CHECK(std::abs(scene.ground_motion->components.at(0).acceleration.at(tt) - pulse.at(tt)) < 1e-4 * pulse.amplitude);
         }
     }
 }
