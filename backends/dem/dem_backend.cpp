@@ -158,6 +158,8 @@ BackendInfo dem_backend_info() {
         {"deformable blocks", Support::exact, "hex8 St. Venant-Kirchhoff, total Lagrangian; lumped, consistent, barycentre or corrected mass"},
         {"general convex hexahedra", Support::exact, "planar-faced convex hexahedra"},
     };
+    info.contact = ContactModel::penalty;
+    info.solver = "penalty springs per hitting point (corners and a virtual grid), elastic-Coulomb shear";
     info.make = [] { return std::make_unique<DemBackend>(); };
     return info;
 }

@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "backend/backend.hpp"
+#include "backend/backend_info.hpp"
 
 namespace cairn::bench {
 
@@ -43,8 +43,7 @@ struct WallResult {
 /// run every backend on every setup one after the other (no other bench point runs meanwhile)
 std::vector<WallResult> run_wall(const std::vector<std::string>& backends, const std::vector<WallSetup>& setups,
                                  int courses, int per_course, int steps, int repeats,
-                                 const std::function<std::unique_ptr<Backend>(const std::string&)>& make,
-                                 bool quiet);
+                                 const std::vector<BackendInfo>& infos, bool quiet);
 
 /// wall.csv text, and its parse
 std::string wall_csv(const std::vector<WallResult>& rows);

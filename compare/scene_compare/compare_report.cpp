@@ -22,7 +22,6 @@ namespace cairn::scene_compare {
 using report::number_text;
 using validation::CaseResult;
 using validation::CaseRun;
-using validation::Outcome;
 
 Baseline choose_baseline(const CaseResult& result, const std::string& wanted) {
     auto completed = [](const CaseRun& r) { return r.outcome == Outcome::completed && r.samples.size() >= 2; };
@@ -131,7 +130,7 @@ report::Document write_compare_report(const CaseResult& result, const CompareCon
                        {}};
     for (const auto& r : result.runs)
         runs.rows.push_back({r.variant.name, report::variant_colour_name(r.variant.name), r.variant.backend, r.variant.contact_label(), r.variant.model,
-                             validation::to_string(r.outcome), r.steps ? std::to_string(r.steps) : "-",
+                             validation::outcome_text(r.outcome), r.steps ? std::to_string(r.steps) : "-",
                              r.dt > 0 ? number_text(r.dt, 3) : "-", number_text(r.wall_seconds, 3), run_note(r)});
     d.table(runs);
 
@@ -274,7 +273,7 @@ report::Document write_compare_report(const CaseResult& result, const CompareCon
     for (const auto& r : result.runs) used.insert(r.variant.backend);
     for (const auto& b : ctx.backends) {
         if (!used.count(b.name)) continue;
-        for (const auto& f : b.features)
+        for (const auto& f : b.capabilities)
             if (f.support != Support::exact && applies(f.feature, scene, b.name != "dem")) cap.rows.push_back({b.name, f.feature, to_string(f.support), f.how.empty() ? "-" : f.how});
     }
     for (const auto& r : result.runs)
