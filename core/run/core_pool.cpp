@@ -23,6 +23,14 @@ int machine_cores() {
     return std::max(1, int(std::thread::hardware_concurrency()));
 }
 
+int openmp_threads() {
+#ifdef _OPENMP
+    return omp_get_max_threads();
+#else
+    return 1;
+#endif
+}
+
 CoreShare share_cores(std::size_t tasks, int jobs) {
     const int cores = machine_cores();
     CoreShare s;
