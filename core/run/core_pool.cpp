@@ -27,7 +27,7 @@ int openmp_threads() {
 #ifdef _OPENMP
     return omp_get_max_threads();
 #else
-    return 1;
+    return 0;
 #endif
 }
 

@@ -21,7 +21,8 @@ struct CoreShare {
 /// the share for `tasks` tasks with at most `jobs` at a time (0 or more than the cores: one per core)
 CoreShare share_cores(std::size_t tasks, int jobs);
 
-/// the OpenMP threads a parallel region started on the calling thread would use (1 without OpenMP)
+/// the OpenMP threads a parallel region started on the calling thread would use; 0 when cairn is
+/// built without OpenMP
 int openmp_threads();
 
 /// run task(i) for every i in [0, n) on share_cores(n, jobs).workers threads, each with its OpenMP

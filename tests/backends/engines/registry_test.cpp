@@ -51,6 +51,10 @@ const char* kScene = R"(
 duration = 0.05
 dt = 1e-3
 output_interval = 0.01
+[contact]
+kn = 3e7
+ks = 3e7
+friction = 0.6
 [materials.stone]
 density = 2600.0
 young = 30e9
@@ -74,7 +78,7 @@ TEST_CASE("registry: a test double is listed, made and named in a scene's backen
     CHECK_NOTHROW(check_backend_tables(s, "double.toml"));
     s = parse_scene(std::string(kScene) + "[backends.physx]\niterations = 10\n", "bad.toml");
     CHECK_THROWS_WITH(check_backend_tables(s, "bad.toml"),
-                      Catch::Contains("bad.toml:15: backends.physx: unknown backend (available: dem") &&
+                      Catch::Contains("bad.toml:19: backends.physx: unknown backend (available: dem") &&
                           Catch::Contains("double)"));
     s = parse_scene(std::string(kScene) + "[backends.physx]\n", "bad.toml");
     CHECK_THROWS_WITH(check_backend_tables(s, "bad.toml"), Catch::StartsWith("bad.toml: backends.physx: unknown backend"));
