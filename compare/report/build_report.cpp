@@ -178,15 +178,15 @@ Document build_report(const std::vector<CaseResult>& cases, const FigureSet& fig
     }
 
     d.heading(2, "Capability matrix");
-    std::vector<std::string> features;
-    std::set<std::string> seen;
+    std::vector<Feature> features;
+    std::set<Feature> seen;
     for (const auto& b : ctx.backends)
         for (const auto& f : b.capabilities)
             if (seen.insert(f.feature).second) features.push_back(f.feature);
     Table cap{{"feature"}, {}};
     for (const auto& b : ctx.backends) cap.header.push_back(b.name);
     for (const auto& f : features) {
-        std::vector<std::string> row{f};
+        std::vector<std::string> row{to_string(f)};
         for (const auto& b : ctx.backends) {
             std::string cell = "-";
             for (const auto& x : b.capabilities)

@@ -69,12 +69,12 @@ std::vector<std::string> contact_row(const CaseRun& r) {
 
 /// false for a capability row the scene does not use (a damping it does not set, hexahedra it does
 /// not have, deformable blocks the reference engines are never asked for); rows not named here apply
-bool applies(const std::string& feature, const Scene& scene, bool engine) {
-    if (feature == "mass-proportional damping") return scene.damping.alpha != 0.0;
-    if (feature == "stiffness-proportional damping") return scene.damping.beta != 0.0;
-    if (feature == "normal contact damping") return scene.contact.damping_rule != ContactDampingRule::none;
-    if (feature == "deformable blocks") return !engine;
-    if (feature == "general convex hexahedra")
+bool applies(Feature feature, const Scene& scene, bool engine) {
+    if (feature == Feature::mass_damping) return scene.damping.alpha != 0.0;
+    if (feature == Feature::stiffness_damping) return scene.damping.beta != 0.0;
+    if (feature == Feature::normal_damping) return scene.contact.damping_rule != ContactDampingRule::none;
+    if (feature == Feature::deformable_blocks) return !engine;
+    if (feature == Feature::general_hexahedra)
         return std::any_of(scene.blocks.begin(), scene.blocks.end(), [](const BlockDef& b) { return b.shape == Shape::hexahedron; });
     return true;
 }
@@ -274,7 +274,7 @@ report::Document write_compare_report(const CaseResult& result, const CompareCon
     for (const auto& b : ctx.backends) {
         if (!used.count(b.name)) continue;
         for (const auto& f : b.capabilities)
-            if (f.support != Support::exact && applies(f.feature, scene, b.name != "dem")) cap.rows.push_back({b.name, f.feature, to_string(f.support), f.how.empty() ? "-" : f.how});
+            if (f.support != Support::exact && applies(f.feature, scene, b.name != "dem")) cap.rows.push_back({b.name, to_string(f.feature), to_string(f.support), f.how.empty() ? "-" : f.how});
     }
     for (const auto& r : result.runs)
         if (r.outcome == Outcome::refused)
