@@ -70,7 +70,7 @@ int trade(const BenchOptions& o, const std::string& dir) {
         return kExitBadInput;
     }
     const auto pts = bench::run_trade(configs, (fs::path(dir) / "trade.csv").string(),
-                                      {o.repeats, o.jobs, o.quiet}, make);
+                                      {o.repeats, o.jobs, o.quiet}, available_backends());
     bench::write_bench_report(dir);
     std::printf("trade: %zu points in %s/trade.csv; %.1f s wall\n", pts.size(), o.out_dir.c_str(), seconds_since(t0));
     return kExitOk;
@@ -82,12 +82,12 @@ int stability(const BenchOptions& o, const std::string& dir) {
     std::vector<bench::StabilityConfig> configs;
     try {
         for (const auto& b : chosen_backends(o.backends))
-            for (auto& c : bench::stability_configs(b, scenarios_dir(), make, o.long_steps)) configs.push_back(std::move(c));
+            for (auto& c : bench::stability_configs(b, scenarios_dir(), available_backends(), o.long_steps)) configs.push_back(std::move(c));
     } catch (const Error& e) {
         std::cerr << "error: " << e.what() << "\n";
         return kExitBadInput;
     }
-    const auto pts = bench::run_stability(configs, o.jobs, o.quiet, make);
+    const auto pts = bench::run_stability(configs, o.jobs, o.quiet, available_backends());
     write_text_atomic((fs::path(dir) / "stability.csv").string(), bench::stability_csv(pts));
     bench::write_bench_report(dir);
     std::printf("stability: %zu points in %s/stability.csv; %.1f s wall\n", pts.size(), o.out_dir.c_str(),
@@ -100,8 +100,8 @@ int wall(const BenchOptions& o, const std::string& dir) {
     const auto t0 = std::chrono::steady_clock::now();
     std::vector<std::string> backends;
     if (!backends_or_error(o, backends)) return kExitBadInput;
-    const auto rows = bench::run_wall(backends, bench::wall_setups(), o.courses, 10, o.wall_steps, o.repeats, make,
-                                      o.quiet);
+    const auto rows = bench::run_wall(backends, bench::wall_setups(), o.courses, 10, o.wall_steps, o.repeats,
+                                      available_backends(), o.quiet);
     write_text_atomic((fs::path(dir) / "wall.csv").string(), bench::wall_csv(rows));
     bench::write_bench_report(dir);
     for (const auto& r : rows)

@@ -6,17 +6,16 @@
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
-#include <thread>
 
 
 #include "commands.hpp"
 #include "error.hpp"
 #include "output/atomic_write.hpp"
 #include "output/staged_dir.hpp"
-#include "pool_backends.hpp"
 #include "progress_line.hpp"
 #include "registry.hpp"
 #include "report/document.hpp"
+#include "run/core_pool.hpp"
 #include "run/stop.hpp"
 #include "scene/scene_io.hpp"
 #include "scene_compare/compare_report.hpp"
@@ -77,6 +76,7 @@ int compare_command(const CompareOptions& options) {
             if (!std::isalnum(static_cast<unsigned char>(ch)) && ch != '-' && ch != '_' && ch != '.') ch = '_';
         if (c.name.empty() || c.name[0] == '.') c.name = "scene" + c.name;
         c.scene = load_scene(path, overrides);
+        check_backend_tables(c.scene, path);
         for (const auto& v : scene_compare::compare_variants(c.scene, backends, options.model)) {
             validation::CaseRun r;
             r.case_name = c.name;
@@ -90,9 +90,8 @@ int compare_command(const CompareOptions& options) {
         std::cerr << "error: " << e.what() << "\n";
         return kExitBadInput;
     }
-    // runs at a time: the cores, at most; with more than one at a time each dem run uses one
-    // OpenMP thread, so that runs × threads never exceeds the cores
-    const int cores = std::max(1, int(std::thread::hardware_concurrency()));
+    // runs at a time: the cores, at most (the run layer shares them: runs × threads ≤ cores)
+    const int cores = machine_cores();
     int jobs = options.jobs > 0 ? options.jobs : cores;
     if (jobs > cores) {
         std::cerr << "note: --jobs " << jobs << " lowered to the " << cores << " cores of this machine\n";
@@ -104,7 +103,6 @@ int compare_command(const CompareOptions& options) {
     // on a terminal one progress line for all runs instead of a line per run; nothing otherwise
     plan.quiet = true;
     const bool show = !options.quiet && stderr_is_terminal();
-    plan.serial_backends = {"ode", "siconos"};   // Debian's ODE keeps its collision data global (no mt_collisions); Siconos 4.4's thread safety is not established
     plan.cases.push_back(std::move(c));
 
     // the report is built beside the old one and swapped in whole: compare owns these entries of
@@ -126,7 +124,7 @@ int compare_command(const CompareOptions& options) {
     PoolProgress progress("compare " + plan.cases.front().name, plan.cases.front().runs.size(),
                           plan.cases.front().scene.run.duration);
     if (show) plan.progress = [&progress](size_t run, double f) { progress.update(run, f); };
-    validation::run_plan(plan, pool_backend_factory(jobs));
+    validation::run_plan(plan, available_backends());
     progress.clear();
     if (stop_requested()) return interrupted_keeping("report", out_dir);
 
@@ -135,7 +133,7 @@ int compare_command(const CompareOptions& options) {
     ctx.baseline = options.baseline;
     for (const auto& b : available_backends())
         if (std::find(backends.begin(), backends.end(), b.name) != backends.end())
-            ctx.backends.push_back({b.name, b.description, b.capabilities});
+            ctx.backends.push_back(b);
     ctx.command = command_line(options, out_dir);
     ctx.jobs = jobs;
     std::string note;
@@ -149,9 +147,9 @@ int compare_command(const CompareOptions& options) {
 
     int completed = 0;
     for (const auto& r : result.runs) {
-        std::printf("%-18s %s%s%s\n", r.variant.name.c_str(), validation::to_string(r.outcome),
+        std::printf("%-18s %s%s%s\n", r.variant.name.c_str(), validation::outcome_text(r.outcome),
                     r.message.empty() ? "" : ": ", r.message.substr(0, 160).c_str());
-        completed += r.outcome == validation::Outcome::completed;
+        completed += r.outcome == Outcome::completed;
     }
     if (!note.empty()) std::cout << "figures: " << note << "\n";
     std::printf("\nreport: %s (and report.md, differences.csv); %d of %zu variants completed\n",

@@ -46,9 +46,9 @@ int list_command() {
     for (const auto& b : available_backends()) {
         std::cout << "  " << b.name << ": " << b.description << "\n";
         size_t fw = 0;
-        for (const auto& f : b.capabilities) fw = std::max(fw, width_of(f.feature));
+        for (const auto& f : b.capabilities) fw = std::max(fw, width_of(to_string(f.feature)));
         for (const auto& f : b.capabilities) {
-            std::cout << "    " << padded(f.feature, fw);
+            std::cout << "    " << padded(to_string(f.feature), fw);
             if (f.how.empty()) std::cout << to_string(f.support) << "\n";
             else std::cout << padded(to_string(f.support), 11) << f.how << "\n";
         }

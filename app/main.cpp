@@ -6,6 +6,7 @@
 #include <CLI/CLI.hpp>
 
 #include "commands.hpp"
+#include "wait_policy.hpp"
 #include "run/stop.hpp"
 #include "limit_options.hpp"
 #include "suggest.hpp"
@@ -14,6 +15,7 @@
 
 int main(int argc, char** argv) {
     using namespace cairn;
+    ensure_passive_openmp_wait(argv);
     // the name is fixed so that usage lines say "cairn", not the path it was started by
     CLI::App app{"cairn: a testbed for masonry block dynamics (scenes on several engines)", "cairn"};
     app.set_version_flag("--version", std::string("cairn ") + CAIRN_VERSION);

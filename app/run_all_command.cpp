@@ -104,6 +104,7 @@ int run_all_command(const RunAllOptions& options) {
                                               row.outcome.message;
                         break;
                     case JobStatus::input_error:
+                    case JobStatus::failed:
                         row.status = "FAILED";
                         failed = true;
                         break;

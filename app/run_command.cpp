@@ -31,6 +31,9 @@ int run_command(RunJob job, bool quiet) {
             std::cerr << "interrupted: " << o.message << "\n"
                       << "partial trajectory kept in " << job.out_dir << "/trajectory.partial.csv\n";
             return kExitInterrupted;
+        case JobStatus::failed:   // not returned by execute_run (its failures propagate)
+            std::cerr << "error: " << o.message << "\n";
+            return kExitFailure;
         case JobStatus::completed:
             if (!quiet) std::cout << summary_line(o) << " -> " << job.out_dir << "\n";
             return kExitOk;

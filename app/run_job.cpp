@@ -9,7 +9,7 @@
 #include "error.hpp"
 #include "output/atomic_write.hpp"
 #include "output/contacts_csv.hpp"
-#include "output/run_record.hpp"
+#include "output/run_files.hpp"
 #include "output/staged_dir.hpp"
 #include "progress_line.hpp"
 #include "output/trajectory_csv.hpp"
@@ -23,17 +23,6 @@ namespace fs = std::filesystem;
 
 namespace cairn {
 
-const char* to_string(JobStatus s) {
-    switch (s) {
-        case JobStatus::completed: return "completed";
-        case JobStatus::unstable: return "unstable";
-        case JobStatus::interrupted: return "interrupted";
-        case JobStatus::input_error: return "error";
-        case JobStatus::refused: return "refused";
-    }
-    return "?";
-}
-
 std::string summary_line(const JobOutcome& o) {
     char buf[256];
     std::snprintf(buf, sizeof buf,
@@ -46,22 +35,8 @@ std::string summary_line(const JobOutcome& o) {
 
 namespace {
 
-/// the output files a run writes
-constexpr const char* kTrajectory = "trajectory.csv";
-constexpr const char* kPartial = "trajectory.partial.csv";
-constexpr const char* kRecord = "run.json";
+/// the contact points a run writes with --contacts
 constexpr const char* kContacts = "contacts.csv";
-
-/// set every free block's model from --model
-void apply_model(Scene& scene, const std::string& model) {
-    if (model.empty()) return;
-    BlockModel m;
-    if (model == "rigid") m = BlockModel::rigid;
-    else if (model == "deformable") m = BlockModel::deformable;
-    else throw Error("--model " + model + ": expected rigid or deformable");
-    for (auto& b : scene.blocks)
-        if (!b.fixed) b.model = m;
-}
 
 }  // namespace
 
@@ -79,6 +54,7 @@ JobOutcome execute_run(const RunJob& job) {
         std::vector<Override> overrides;
         for (const auto& s : job.overrides) overrides.push_back(parse_override(s));
         scene = load_scene(request.scene_path, overrides);
+        check_backend_tables(scene, request.scene_path);
         apply_model(scene, job.model);
         backend = make_backend(job.backend);
         if (job.contact != "rigid" && job.contact != "matched")
@@ -86,7 +62,7 @@ JobOutcome execute_run(const RunJob& job) {
         views = std::make_unique<RunViews>(scene, *backend, job.backend, job.vtk, job.replay);
         out = std::make_unique<StagedDir>(job.out_dir, job.force);
         // --force replaces a run's own files; anything else in DIR comes along (hard links)
-        out->carry_over({kTrajectory, kPartial, kRecord, kContacts, kVtkDir, kReplayPage}, StagedDir::Carry::link);
+        out->carry_over({kTrajectoryFile, kPartialTrajectoryFile, kRunRecordFile, kContacts, kVtkDir, kReplayPage}, StagedDir::Carry::link);
     } catch (const Error& e) {
         o.status = JobStatus::input_error;
         o.message = e.what();
@@ -101,7 +77,7 @@ JobOutcome execute_run(const RunJob& job) {
     // the trajectory streams into the staging directory as the run goes; the set (trajectory and
     // run.json, written last) replaces DIR only when complete
     const fs::path dir = out->path();
-    TrajectoryCsvFile csv((dir / kTrajectory).string());
+    TrajectoryCsvFile csv((dir / kTrajectoryFile).string());
     ContactsCsvFile contacts((dir / kContacts).string(), *backend);
     RunResult result;
     // on a terminal, a progress line: simulated time, steps/s, time left
@@ -122,16 +98,9 @@ JobOutcome execute_run(const RunJob& job) {
     }
     progress.clear();
 
-    const bool completed = result.status == RunStatus::completed;
-    if (!completed) fs::rename(dir / kTrajectory, dir / kPartial);
-    write_text_atomic((dir / kRecord).string(), run_record_text(scene, *backend, result, request));
+    finish_run_files(dir.string(), scene, *backend, result, request);
     out->commit();
-
-    switch (result.status) {
-        case RunStatus::completed: o.status = JobStatus::completed; break;
-        case RunStatus::unstable: o.status = JobStatus::unstable; break;
-        case RunStatus::interrupted: o.status = JobStatus::interrupted; break;
-    }
+    o.status = outcome_of(result.status);
     o.message = result.message;
     o.steps = result.steps;
     o.dt = result.dt;

@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include "run/run_jobs.hpp"
 #include "run/run_limits.hpp"
 
 namespace cairn {
@@ -26,14 +27,9 @@ struct RunJob {
     bool contacts = false;                ///< write every sample's contact points to out_dir/contacts.csv
 };
 
-/// How a run ended.
-enum class JobStatus {
-    completed,     ///< outputs written
-    unstable,      ///< partial outputs written, status "unstable"
-    interrupted,   ///< stopped by SIGINT/SIGTERM: partial outputs written, status "interrupted"
-    input_error,   ///< bad scene, override, backend name or output dir: nothing written
-    refused,       ///< the backend cannot build this scene: nothing written
-};
+/// How a run ended: the run layer's one vocabulary (input_error: bad scene, override, backend name
+/// or output dir, nothing written; refused: the backend cannot build this scene, nothing written)
+using JobStatus = Outcome;
 
 /// What a run produced, for the summary line and the run-all table.
 struct JobOutcome {
@@ -51,9 +47,6 @@ struct JobOutcome {
 /// cairn::Error from input or the backend becomes input_error/refused, other exceptions (a write
 /// error) propagate and leave job.out_dir as it was
 JobOutcome execute_run(const RunJob& job);
-
-/// "completed", "unstable", "interrupted", "error", "refused"
-const char* to_string(JobStatus s);
 
 /// one-line summary of an outcome: steps, dt, wall time, final balance error
 std::string summary_line(const JobOutcome& o);

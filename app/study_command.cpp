@@ -59,7 +59,7 @@ int study_inertia_command(const StudyInertiaOptions& o) {
     options.quiet = o.quiet;
     const auto start = std::chrono::steady_clock::now();
     const auto points = study::run_study(study::default_cases(scenarios_dir()), options,
-                                         [] { return make_backend("dem"); }, dem_inertia);
+                                         available_backends(), dem_inertia);
     const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     if (stop_requested()) {
         return interrupted_keeping("study", o.out_dir);

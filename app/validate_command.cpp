@@ -7,7 +7,6 @@
 #include <iostream>
 
 #include "commands.hpp"
-#include "pool_backends.hpp"
 #include "error.hpp"
 #include "output/atomic_write.hpp"
 #include "output/staged_dir.hpp"
@@ -60,7 +59,6 @@ int validate_command(const ValidateOptions& options) {
     plan.overrides = options.overrides;
     plan.jobs = options.jobs;
     plan.quiet = options.quiet;
-    plan.serial_backends = {"ode", "siconos"};   // Debian's ODE keeps its collision data global (no mt_collisions); Siconos 4.4's thread safety is not established
     try {
         for (const auto& b : backends) make_backend(b);
         std::vector<Override> overrides;
@@ -73,6 +71,7 @@ int validate_command(const ValidateOptions& options) {
             validation::CaseResult c;
             c.name = fs::path(n).filename().string();
             c.scene = load_scene(path, overrides);
+            check_backend_tables(c.scene, path);
             if (!c.scene.reference) throw Error(path + ": no [reference] table: nothing to validate against");
             for (const auto& v : validation::variants_for(c.scene, backends)) {
                 validation::CaseRun r;
@@ -104,7 +103,7 @@ int validate_command(const ValidateOptions& options) {
     plan.final_dir = options.out_dir;
     std::error_code ec;
 
-    validation::run_plan(plan, pool_backend_factory(plan.jobs));
+    validation::run_plan(plan, available_backends());
     if (stop_requested()) {
         return interrupted_keeping("report", options.out_dir);
     }
@@ -112,7 +111,7 @@ int validate_command(const ValidateOptions& options) {
     report::ReportContext ctx;
     for (const auto& b : available_backends())
         for (const auto& name : backends)
-            if (b.name == name) ctx.backends.push_back({b.name, b.description, b.capabilities});
+            if (b.name == name) ctx.backends.push_back(b);
     ctx.jobs = options.jobs;
     ctx.command = command_line(options);
     const auto figures = report::write_figures(plan.cases, dir.string());

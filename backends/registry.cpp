@@ -17,34 +17,57 @@
 
 namespace cairn {
 
-const std::vector<BackendInfo>& available_backends() {
-    static const std::vector<BackendInfo> list = [] {
-        std::vector<BackendInfo> l;
-        l.push_back(dem_backend_info());
+namespace {
+
+std::vector<BackendInfo>& list() {
+    static std::vector<BackendInfo> l = [] {
+        std::vector<BackendInfo> v;
+        v.push_back(dem_backend_info());
 #ifdef CAIRN_WITH_BULLET
-        l.push_back(bullet_backend_info());
+        v.push_back(bullet_backend_info());
 #endif
 #ifdef CAIRN_WITH_ODE
-        l.push_back(ode_backend_info());
+        v.push_back(ode_backend_info());
 #endif
 #ifdef CAIRN_WITH_MUJOCO
-        l.push_back(mujoco_backend_info());
+        v.push_back(mujoco_backend_info());
 #endif
 #ifdef CAIRN_WITH_SICONOS
-        l.push_back(siconos_backend_info());
+        v.push_back(siconos_backend_info());
 #endif
-        return l;
+        return v;
     }();
-    return list;
+    return l;
 }
 
-std::unique_ptr<Backend> make_backend(const std::string& name) {
-    std::string names;
-    for (const auto& b : available_backends()) {
-        if (b.name == name) return b.make();
-        names += (names.empty() ? "" : ", ") + b.name;
+std::string names() {
+    std::string s;
+    for (const auto& b : list()) s += (s.empty() ? "" : ", ") + b.name;
+    return s;
+}
+
+}  // namespace
+
+const std::vector<BackendInfo>& available_backends() { return list(); }
+
+void register_backend(BackendInfo info) {
+    if (!info.make) throw Error("backend '" + info.name + "': no make function");
+    for (const auto& b : list())
+        if (b.name == info.name) throw Error("backend '" + info.name + "' is registered already");
+    list().push_back(std::move(info));
+}
+
+std::unique_ptr<Backend> make_backend(const std::string& name) { return find_backend(list(), name).make(); }
+
+void check_backend_tables(const Scene& scene, const std::string& path) {
+    for (const auto& [name, settings] : scene.backend_settings) {
+        bool known = false;
+        for (const auto& b : list()) known = known || b.name == name;
+        if (known) continue;
+        // a setting's origin is "file:line"; an empty table has only the file
+        const std::string where = settings.empty() ? path : settings.begin()->second.origin;
+        throw Error(where + ": backends." + name + ": unknown backend (available: " + names() + ")");
     }
-    throw Error("unknown backend '" + name + "' (available: " + names + ")");
 }
 
 }  // namespace cairn

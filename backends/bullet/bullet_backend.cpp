@@ -337,6 +337,7 @@ BackendInfo bullet_backend_info() {
     info.name = "bullet";
     info.description = "Bullet 3 rigid bodies (double precision); contact rigid or matched (kn*A per manifold)";
     info.capabilities = bullet_capabilities();
+    info.solver = "sequential impulses, 50 iterations, split impulse";
     info.make = [] { return std::make_unique<BulletBackend>(); };
     return info;
 }

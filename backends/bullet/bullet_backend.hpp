@@ -2,7 +2,7 @@
 /// Bullet 3 (btDiscreteDynamicsWorld, double precision) as a cairn backend ("bullet").
 
 #include "backend/backend.hpp"
-#include "registry.hpp"
+#include "backend/backend_info.hpp"
 
 namespace cairn {
 

@@ -149,15 +149,17 @@ BackendInfo dem_backend_info() {
     info.name = "dem";
     info.description = "in-house discrete element engine (the paper's contact law), rigid or deformable hex8 blocks";
     info.capabilities = {
-        {"penalty stiffness kn·A", Support::exact, "kn·a per hitting point (corners + virtual grid)"},
-        {"normal contact damping", Support::exact, "dashpot per hitting point (ratio ζ or time γ)"},
-        {"elastic stick before slip", Support::exact, "shear spring ks·a from a stored stick anchor"},
-        {"friction shape", Support::exact, "Coulomb disc per hitting point"},
-        {"mass-proportional damping", Support::exact, "α·M, implicit in the kick"},
-        {"stiffness-proportional damping", Support::exact, "deformable blocks: strain-rate (Kelvin-Voigt) β·C:Ė; rigid blocks have none"},
-        {"deformable blocks", Support::exact, "hex8 St. Venant-Kirchhoff, total Lagrangian; lumped, consistent, barycentre or corrected mass"},
-        {"general convex hexahedra", Support::exact, "planar-faced convex hexahedra"},
+        {Feature::penalty_stiffness, Support::exact, "kn·a per hitting point (corners + virtual grid)"},
+        {Feature::normal_damping, Support::exact, "dashpot per hitting point (ratio ζ or time γ)"},
+        {Feature::elastic_stick, Support::exact, "shear spring ks·a from a stored stick anchor"},
+        {Feature::friction_shape, Support::exact, "Coulomb disc per hitting point"},
+        {Feature::mass_damping, Support::exact, "α·M, implicit in the kick"},
+        {Feature::stiffness_damping, Support::exact, "deformable blocks: strain-rate (Kelvin-Voigt) β·C:Ė; rigid blocks have none"},
+        {Feature::deformable_blocks, Support::exact, "hex8 St. Venant-Kirchhoff, total Lagrangian; lumped, consistent, barycentre or corrected mass"},
+        {Feature::general_hexahedra, Support::exact, "planar-faced convex hexahedra"},
     };
+    info.contact = ContactModel::penalty;
+    info.solver = "penalty springs per hitting point (corners and a virtual grid), elastic-Coulomb shear";
     info.make = [] { return std::make_unique<DemBackend>(); };
     return info;
 }

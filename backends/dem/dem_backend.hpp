@@ -2,7 +2,7 @@
 /// The in-house discrete element engine as a cairn backend ("dem").
 
 #include "backend/backend.hpp"
-#include "registry.hpp"
+#include "backend/backend_info.hpp"
 
 namespace cairn {
 

@@ -2,7 +2,7 @@
 /// MuJoCo 2.2.2 as a cairn backend ("mujoco"); the model is MJCF text built in memory.
 
 #include "backend/backend.hpp"
-#include "registry.hpp"
+#include "backend/backend_info.hpp"
 
 namespace cairn {
 

@@ -9,17 +9,17 @@ namespace cairn {
 std::vector<FeatureSupport> mujoco_capabilities() {
     using S = Support;
     return {
-        {"penalty stiffness kn·A", S::approximate,
+        {Feature::penalty_stiffness, S::approximate,
          "matched mode: direct solref per contact from the pair's invweight, impedance 1e-3: static "
          "penetration exact, period +0.2 %"},
-        {"normal contact damping", S::approximate, "matched mode: direct solref damping c/4 per contact (pair's reduced mass)"},
-        {"elastic stick before slip", S::none, "soft velocity-level friction: slow creep instead of a shear spring"},
-        {"friction shape", S::approximate, "elliptic cone (isotropic: sliding threshold 0.999-1.0005 mu·W at 0, 30 and 45 degrees); "
+        {Feature::normal_damping, S::approximate, "matched mode: direct solref damping c/4 per contact (pair's reduced mass)"},
+        {Feature::elastic_stick, S::none, "soft velocity-level friction: slow creep instead of a shear spring"},
+        {Feature::friction_shape, S::approximate, "elliptic cone (isotropic: sliding threshold 0.999-1.0005 mu·W at 0, 30 and 45 degrees); "
          "cone = \"pyramidal\" held beyond 1.6 mu·W at 30 and 45 degrees"},
-        {"mass-proportional damping", S::approximate, "velocities scaled by exp(-alpha·dt) after each step"},
-        {"stiffness-proportional damping", S::none, "beta ignored (rigid bodies)"},
-        {"deformable blocks", S::none, "refused: run with --model rigid"},
-        {"general convex hexahedra", S::exact,
+        {Feature::mass_damping, S::approximate, "velocities scaled by exp(-alpha·dt) after each step"},
+        {Feature::stiffness_damping, S::none, "beta ignored (rigid bodies)"},
+        {Feature::deformable_blocks, S::none, "refused: run with --model rigid"},
+        {Feature::general_hexahedra, S::exact,
          "mesh geoms; box-mesh and mesh-mesh pairs through cairn's face-clipping collider (up to 4 points; "
          "MuJoCo 2.2.2's own gives one per pair)"},
     };

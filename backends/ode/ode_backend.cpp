@@ -476,6 +476,9 @@ BackendInfo ode_backend_info() {
     info.name = "ode";
     info.description = "Open Dynamics Engine 0.16 rigid bodies (double); contact rigid or matched (soft ERP/CFM)";
     info.capabilities = ode_capabilities();
+    info.solver = "QuickStep 50 iterations, ERP 0.2, CFM 1e-10";
+    // Debian's ODE keeps its collision data global (built without mt_collisions): one run at a time
+    info.thread_safe = false;
     info.make = [] { return std::make_unique<OdeBackend>(); };
     return info;
 }

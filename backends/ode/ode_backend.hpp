@@ -2,7 +2,7 @@
 /// The Open Dynamics Engine (0.16, double precision) as a cairn backend ("ode").
 
 #include "backend/backend.hpp"
-#include "registry.hpp"
+#include "backend/backend_info.hpp"
 
 namespace cairn {
 

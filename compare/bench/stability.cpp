@@ -6,7 +6,7 @@
 #include <cmath>
 #include <sstream>
 
-#include "bench/point_pool.hpp"
+#include "run/run_jobs.hpp"
 #include "bench/trade_point.hpp"
 #include "geometry/hexahedron.hpp"
 
@@ -57,16 +57,27 @@ double max_penetration(const Scene& scene, const std::vector<Sample>& samples) {
 }
 
 std::vector<StabilityPoint> run_stability(std::vector<StabilityConfig>& configs, int jobs, bool quiet,
-                                          const MakeBackend& make) {
-    std::vector<PoolJob> pj;
-    for (const auto& c : configs)
-        pj.push_back({c.point.backend, c.point.parameter + " " + c.point.value_text, &c.scene, c.contact_mode});
+                                          const std::vector<BackendInfo>& backends) {
+    std::vector<RunSpec> specs;
+    for (const auto& c : configs) {
+        RunSpec s;
+        s.scene = &c.scene;
+        s.backend = c.point.backend;
+        s.options.contact_mode = c.contact_mode;
+        s.options.limits.allow_unstable_dt = true;   // the map goes beyond the critical step
+        s.label = c.point.parameter + " " + c.point.value_text;
+        specs.push_back(std::move(s));
+    }
     std::vector<StabilityPoint> out(configs.size());
-    run_pool(pj, {1, jobs, quiet, "stability"}, make, [&](size_t j, const PoolResult& r, std::mutex&) {
+    JobsOptions options;
+    options.jobs = jobs;
+    options.quiet = quiet;
+    options.tag = "stability";
+    run_jobs(specs, backends, options, [&](size_t j, JobResult& r) {
         StabilityConfig& c = configs[j];
         StabilityPoint p = c.point;
         StabilityInput in;
-        in.outcome = r.outcome;
+        in.outcome = to_string(r.outcome);
         in.energy_booked = p.energy_booked;
         in.energy_drift = r.result.energy_drift;
         in.max_balance_error = r.result.max_balance_error;
@@ -76,7 +87,7 @@ std::vector<StabilityPoint> run_stability(std::vector<StabilityConfig>& configs,
         p.wall_seconds = r.median_wall;
         p.max_balance_error = r.result.max_balance_error;
         p.penetration = r.result.samples.empty() ? NAN : max_penetration(c.scene, r.result.samples);
-        if (r.outcome == "completed") {
+        if (r.outcome == Outcome::completed) {
             try {
                 const Judgement jd = c.judge(c.scene, r.result.samples);
                 in.oracle_pass = jd.pass;

@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-#include "backend/backend.hpp"
+#include "backend/backend_info.hpp"
 
 namespace cairn::bench {
 
@@ -72,20 +72,17 @@ struct StabilityConfig {
     std::function<Judgement(const Scene&, const std::vector<Sample>&)> judge;
 };
 
-/// makes a backend by registry name
-using MakeBackend = std::function<std::unique_ptr<Backend>(const std::string&)>;
-
-/// every point of the map for one backend (scenes from `scenarios_dir`); `make` builds dem once per
-/// scene to read its critical step; `long_steps` steps for the long run
+/// every point of the map for one backend (scenes from `scenarios_dir`); dem of `backends` is built
+/// once per scene to read its critical step; `long_steps` steps for the long run
 std::vector<StabilityConfig> stability_configs(const std::string& backend, const std::string& scenarios_dir,
-                                               const MakeBackend& make, long long long_steps);
+                                               const std::vector<BackendInfo>& backends, long long long_steps);
 
 /// largest penetration (m) of the reference block's corners below the top of the first fixed block
 double max_penetration(const Scene& scene, const std::vector<Sample>& samples);
 
-/// run every point (2 at a time) and class it
+/// run every point (`jobs` at a time, on the run layer) and class it
 std::vector<StabilityPoint> run_stability(std::vector<StabilityConfig>& configs, int jobs, bool quiet,
-                                          const MakeBackend& make);
+                                          const std::vector<BackendInfo>& backends);
 
 /// stability.csv text
 std::string stability_csv(const std::vector<StabilityPoint>& points);

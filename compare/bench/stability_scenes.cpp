@@ -88,7 +88,7 @@ Judgement stack_judge(const Scene& scene, const std::vector<Sample>& s) {
 }  // namespace
 
 std::vector<StabilityConfig> stability_configs(const std::string& backend, const std::string& dir,
-                                               const MakeBackend& make, long long long_steps) {
+                                               const std::vector<BackendInfo>& backends, long long long_steps) {
     const bool dem = backend == "dem";
     const std::string matched = dem ? "rigid" : "matched";
     std::vector<StabilityConfig> out;
@@ -124,7 +124,7 @@ std::vector<StabilityConfig> stability_configs(const std::string& backend, const
     };
     if (dem) {
         Scene probe = impact_scene();
-        auto b = make("dem");
+        auto b = find_backend(backends, "dem").make();
         b->build(probe, RunOptions{});
         const double crit = b->critical_step();
         for (double f : {0.1, 0.2, 0.5, 1.0, 1.5, 2.0, 3.0, 5.0}) {   // 3, 5: where it really blows up
@@ -197,7 +197,7 @@ std::vector<StabilityConfig> stability_configs(const std::string& backend, const
         Scene s = load(rest, {});
         double dt = 1e-4;
         if (dem) {
-            auto b = make("dem");
+            auto b = find_backend(backends, "dem").make();
             b->build(s, RunOptions{});
             dt = b->time_step();
         }

@@ -6,14 +6,14 @@
 #include <filesystem>
 #include <fstream>
 #include <iostream>
+#include <mutex>
 #include <set>
 
 #include "analytic/oracles.hpp"
-#include "bench/point_pool.hpp"
 #include "cases/case_analysis.hpp"
 #include "cases/case_util.hpp"
 #include "error.hpp"
-#include "run/runner.hpp"
+#include "run/run_jobs.hpp"
 #include "scene/scene_io.hpp"
 
 namespace cairn::bench {
@@ -167,7 +167,7 @@ double trade_error(const Scene& scene, const std::vector<Sample>& samples, bool 
 }
 
 std::vector<TradePoint> run_trade(const std::vector<TradeConfig>& configs, const std::string& csv_path,
-                                  const TradeOptions& options, const BackendFactory& make) {
+                                  const TradeOptions& options, const std::vector<BackendInfo>& backends) {
     namespace fs = std::filesystem;
     // resume: keep what the file has, run the rest
     std::vector<TradePoint> done = read_trade_csv(csv_path);
@@ -200,19 +200,31 @@ std::vector<TradePoint> run_trade(const std::vector<TradeConfig>& configs, const
         std::cerr << "trade: " << done.size() << " points already in " << csv_path << ", " << pending.size()
                   << " to run\n";
 
-    PoolOptions po{options.repeats, options.jobs, options.quiet, "trade"};
-    std::vector<PoolJob> jobs;
-    for (const auto* c : pending) jobs.push_back({c->point.backend, c->point.variant + " " + c->point.case_name + " " + c->point.knobs,
-                                               &c->scene, c->contact_mode});
-    run_pool(jobs, po, make, [&](size_t j, const PoolResult& r, std::mutex& lock) {
+    JobsOptions po;
+    po.jobs = options.jobs;
+    po.quiet = options.quiet;
+    po.tag = "trade";
+    std::vector<RunSpec> jobs;
+    for (const auto* c : pending) {
+        RunSpec s;
+        s.scene = &c->scene;
+        s.backend = c->point.backend;
+        s.options.contact_mode = c->contact_mode;
+        s.options.limits.allow_unstable_dt = true;   // the benches map stability beyond the critical step
+        s.repeats = options.repeats;
+        s.label = c->point.variant + " " + c->point.case_name + " " + c->point.knobs;
+        jobs.push_back(std::move(s));
+    }
+    std::mutex lock;
+    run_jobs(jobs, backends, po, [&](size_t j, JobResult& r) {
         TradePoint p = pending[j]->point;
-        p.status = r.outcome;
+        p.status = to_string(r.outcome);
         p.wall_seconds = r.median_wall;
         p.dt = r.result.dt;
         p.steps = r.result.steps;
         p.sim_seconds = r.result.steps * r.result.dt;
         p.error = NAN;
-        if (r.outcome == "completed") {
+        if (r.outcome == Outcome::completed) {
             try {
                 const bool penalty = p.backend == "dem" || pending[j]->contact_mode == "matched";
                 p.error = trade_error(pending[j]->scene, r.result.samples, penalty, p.error_metric);

@@ -9,13 +9,10 @@
 #include <string>
 #include <vector>
 
-#include "backend/backend.hpp"
+#include "backend/backend_info.hpp"
 #include "bench/trade_point.hpp"
 
 namespace cairn::bench {
-
-/// makes a backend by registry name (the app passes make_backend; compare never sees engines)
-using BackendFactory = std::function<std::unique_ptr<Backend>(const std::string&)>;
 
 /// How big a sweep.
 enum class SweepSize {
@@ -51,9 +48,9 @@ struct TradeOptions {
 };
 
 /// run every configuration whose key is not yet in `csv_path`, appending each finished point to
-/// it; returns every point of the file afterwards (earlier ones included). ODE runs never overlap
-/// (Debian's ODE keeps collision data global).
+/// it; returns every point of the file afterwards (earlier ones included). Runs of a backend that is
+/// not thread-safe never overlap.
 std::vector<TradePoint> run_trade(const std::vector<TradeConfig>& configs, const std::string& csv_path,
-                                  const TradeOptions& options, const BackendFactory& make);
+                                  const TradeOptions& options, const std::vector<BackendInfo>& backends);
 
 }  // namespace cairn::bench

@@ -8,7 +8,7 @@
 #include <cstdio>
 #include <sstream>
 
-#include "bench/point_pool.hpp"
+#include "run/run_jobs.hpp"
 #include "bench/trade_point.hpp"
 #include "error.hpp"
 #include "geometry/hexahedron.hpp"
@@ -44,18 +44,15 @@ Scene wall_scene(int courses, int per_course, const WallSetup& setup) {
 
 namespace {
 
-std::string contact_text(const std::string& backend, const WallSetup& s) {
+/// the contact of a backend on a setup, from the backend's facts
+std::string contact_text(const BackendInfo& info, const WallSetup& s) {
     char b[200];
-    if (backend == "dem")
+    if (info.contact == ContactModel::penalty)
         std::snprintf(b, sizeof b, "penalty kn = %g N/m³ per hitting point (grid 0.1 m), elastic-Coulomb", s.kn);
     else if (s.contact_mode == "matched")
         std::snprintf(b, sizeof b, "matched springs kn·A/4 per contact point, kn = %g N/m³", s.kn);
-    else if (backend == "bullet")
-        std::snprintf(b, sizeof b, "rigid: sequential impulses, 50 iterations, split impulse");
-    else if (backend == "ode")
-        std::snprintf(b, sizeof b, "rigid: QuickStep 50 iterations, ERP 0.2, CFM 1e-10");
     else
-        std::snprintf(b, sizeof b, "rigid: solref 0.002, pyramidal cone");
+        std::snprintf(b, sizeof b, "rigid: %s", info.solver.c_str());
     return b;
 }
 
@@ -63,17 +60,18 @@ std::string contact_text(const std::string& backend, const WallSetup& s) {
 
 std::vector<WallResult> run_wall(const std::vector<std::string>& backends, const std::vector<WallSetup>& setups,
                                  int courses, int per_course, int steps, int repeats,
-                                 const std::function<std::unique_ptr<Backend>(const std::string&)>& make, bool quiet) {
+                                 const std::vector<BackendInfo>& infos, bool quiet) {
     std::vector<WallResult> out;
     for (const auto& setup : setups) {
         const Scene scene = wall_scene(courses, per_course, setup);
         const size_t first = out.size();
         for (const auto& name : backends) {
-            WallResult r{setup.name, name, contact_text(name, setup), setup.kn, setup.dt, courses * per_course, steps, 0.0, 0.0, 0.0, ""};
+            const BackendInfo& info = find_backend(infos, name);
+            WallResult r{setup.name, name, contact_text(info, setup), setup.kn, setup.dt, courses * per_course, steps, 0.0, 0.0, 0.0, ""};
             std::vector<double> rates;
             try {
                 for (int k = 0; k < std::max(1, repeats) && r.status.empty(); ++k) {
-                    auto b = make(name);
+                    auto b = info.make();
                     RunOptions ro;
                     ro.contact_mode = setup.contact_mode;
                     b->build(scene, ro);

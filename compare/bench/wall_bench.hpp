@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-#include "backend/backend.hpp"
+#include "backend/backend_info.hpp"
 
 namespace cairn::bench {
 
@@ -45,8 +45,7 @@ struct WallResult {
 /// run every backend on every setup one after the other (no other bench point runs meanwhile)
 std::vector<WallResult> run_wall(const std::vector<std::string>& backends, const std::vector<WallSetup>& setups,
                                  int courses, int per_course, int steps, int repeats,
-                                 const std::function<std::unique_ptr<Backend>(const std::string&)>& make,
-                                 bool quiet);
+                                 const std::vector<BackendInfo>& infos, bool quiet);
 
 /// call `row` with the fields of every line after the header of a csv text that has `fields` of them
 void for_each_csv_row(const std::string& text, size_t fields,

@@ -13,7 +13,6 @@ namespace cairn::report {
 
 using validation::CaseResult;
 using validation::CaseRun;
-using validation::Outcome;
 
 namespace {
 
@@ -194,24 +193,24 @@ Document build_report(const std::vector<CaseResult>& cases, const FigureSet& fig
         d.table(m);
         Table w{{"variant", "status", "dt (s)", "steps", "wall s", "outputs"}, {}};
         for (const auto& r : c.runs)
-            w.rows.push_back({r.variant.name, validation::to_string(r.outcome), number_text(r.dt), std::to_string(r.steps),
+            w.rows.push_back({r.variant.name, validation::outcome_text(r.outcome), number_text(r.dt), std::to_string(r.steps),
                               fixed_text(r.wall_seconds, 3), r.outcome == Outcome::refused ? "" : r.out_dir});
         d.table(w);
     }
 
     d.heading(2, "Capability matrix");
-    std::vector<std::string> features;
-    std::set<std::string> seen;
+    std::vector<Feature> features;
+    std::set<Feature> seen;
     for (const auto& b : ctx.backends)
-        for (const auto& f : b.features)
+        for (const auto& f : b.capabilities)
             if (seen.insert(f.feature).second) features.push_back(f.feature);
     Table cap{{"feature"}, {}};
     for (const auto& b : ctx.backends) cap.header.push_back(b.name);
     for (const auto& f : features) {
-        std::vector<std::string> row{f};
+        std::vector<std::string> row{to_string(f)};
         for (const auto& b : ctx.backends) {
             std::string cell = "-";
-            for (const auto& x : b.features)
+            for (const auto& x : b.capabilities)
                 if (x.feature == f) cell = std::string(to_string(x.support)) + (x.how.empty() ? "" : ": " + x.how);
             row.push_back(cell);
         }

@@ -10,7 +10,6 @@ namespace cairn::report {
 
 using validation::CaseResult;
 using validation::CaseRun;
-using validation::Outcome;
 
 namespace {
 
@@ -84,10 +83,10 @@ std::string summary_csv(const std::vector<CaseResult>& cases) {
         for (const auto& r : c.runs) {
             const std::string head = c.name + "," + r.variant.name + "," + r.variant.backend + "," +
                                      r.variant.contact_label() + "," + r.variant.model + ",";
-            const std::string tail = "," + number_text(r.wall_seconds) + "," + report::csv_field(validation::to_string(r.outcome)) + "\n";
+            const std::string tail = "," + number_text(r.wall_seconds) + "," + report::csv_field(validation::outcome_text(r.outcome)) + "\n";
             if (!r.analysed) {
                 std::string pass = r.outcome == Outcome::refused ? "cannot represent: " + r.message
-                                                                 : std::string(validation::to_string(r.outcome)) + ": " + r.message;
+                                                                 : std::string(validation::outcome_text(r.outcome)) + ": " + r.message;
                 o << head << "run,,,,,," << report::csv_field(pass) << tail;
                 continue;
             }

@@ -5,23 +5,16 @@
 #include <string>
 #include <vector>
 
-#include "backend/capabilities.hpp"
+#include "backend/backend_info.hpp"
 #include "report/document.hpp"
 #include "report/figures.hpp"
 #include "validation/run_cases.hpp"
 
 namespace cairn::report {
 
-/// One backend's row of the capability matrix.
-struct BackendCapabilities {
-    std::string name;                        ///< registry name
-    std::string description;                 ///< one line
-    std::vector<FeatureSupport> features;    ///< feature, support, how
-};
-
 /// Everything the report shows beyond the runs.
 struct ReportContext {
-    std::vector<BackendCapabilities> backends;   ///< the capability matrix
+    std::vector<BackendInfo> backends;   ///< the capability matrix: the backends used
     double wall_seconds = 0.0;                   ///< wall time of the whole validation, s
     int jobs = 1;                                ///< threads used
     std::string command;                         ///< the command line, for reproduction

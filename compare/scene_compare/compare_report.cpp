@@ -22,7 +22,6 @@ namespace cairn::scene_compare {
 using report::number_text;
 using validation::CaseResult;
 using validation::CaseRun;
-using validation::Outcome;
 
 Baseline choose_baseline(const CaseResult& result, const std::string& wanted) {
     auto completed = [](const CaseRun& r) { return r.outcome == Outcome::completed && r.samples.size() >= 2; };
@@ -70,12 +69,12 @@ std::vector<std::string> contact_row(const CaseRun& r) {
 
 /// false for a capability row the scene does not use (a damping it does not set, hexahedra it does
 /// not have, deformable blocks the reference engines are never asked for); rows not named here apply
-bool applies(const std::string& feature, const Scene& scene, bool engine) {
-    if (feature == "mass-proportional damping") return scene.damping.alpha != 0.0;
-    if (feature == "stiffness-proportional damping") return scene.damping.beta != 0.0;
-    if (feature == "normal contact damping") return scene.contact.damping_rule != ContactDampingRule::none;
-    if (feature == "deformable blocks") return !engine;
-    if (feature == "general convex hexahedra")
+bool applies(Feature feature, const Scene& scene, bool engine) {
+    if (feature == Feature::mass_damping) return scene.damping.alpha != 0.0;
+    if (feature == Feature::stiffness_damping) return scene.damping.beta != 0.0;
+    if (feature == Feature::normal_damping) return scene.contact.damping_rule != ContactDampingRule::none;
+    if (feature == Feature::deformable_blocks) return !engine;
+    if (feature == Feature::general_hexahedra)
         return std::any_of(scene.blocks.begin(), scene.blocks.end(), [](const BlockDef& b) { return b.shape == Shape::hexahedron; });
     return true;
 }
@@ -131,7 +130,7 @@ report::Document write_compare_report(const CaseResult& result, const CompareCon
                        {}};
     for (const auto& r : result.runs)
         runs.rows.push_back({r.variant.name, report::variant_colour_name(r.variant.name), r.variant.backend, r.variant.contact_label(), r.variant.model,
-                             validation::to_string(r.outcome), r.steps ? std::to_string(r.steps) : "-",
+                             validation::outcome_text(r.outcome), r.steps ? std::to_string(r.steps) : "-",
                              r.dt > 0 ? number_text(r.dt, 3) : "-", number_text(r.wall_seconds, 3), run_note(r)});
     d.table(runs);
 
@@ -274,8 +273,8 @@ report::Document write_compare_report(const CaseResult& result, const CompareCon
     for (const auto& r : result.runs) used.insert(r.variant.backend);
     for (const auto& b : ctx.backends) {
         if (!used.count(b.name)) continue;
-        for (const auto& f : b.features)
-            if (f.support != Support::exact && applies(f.feature, scene, b.name != "dem")) cap.rows.push_back({b.name, f.feature, to_string(f.support), f.how.empty() ? "-" : f.how});
+        for (const auto& f : b.capabilities)
+            if (f.support != Support::exact && applies(f.feature, scene, b.name != "dem")) cap.rows.push_back({b.name, to_string(f.feature), to_string(f.support), f.how.empty() ? "-" : f.how});
     }
     for (const auto& r : result.runs)
         if (r.outcome == Outcome::refused)

@@ -16,7 +16,7 @@ namespace cairn::scene_compare {
 struct CompareContext {
     std::string scene_label;        ///< the scene as the user named it
     std::string baseline;           ///< variant the others are compared with; empty = dem-rigid, else the first completed
-    std::vector<report::BackendCapabilities> backends;   ///< capability rows of the engines used
+    std::vector<BackendInfo> backends;   ///< capability rows of the engines used
     std::string command;            ///< the command line, for reproduction
     int jobs = 1;                   ///< runs at a time
     double wall_seconds = 0.0;      ///< wall time of the whole comparison, s

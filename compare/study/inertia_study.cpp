@@ -1,17 +1,12 @@
 #include "study/inertia_study.hpp"
 
 #include <algorithm>
-#include <atomic>
 #include <cmath>
-#include <iostream>
-#include <mutex>
-#include <thread>
 
 #include "analytic/oracles.hpp"
 #include "cases/case_util.hpp"
 #include "error.hpp"
-#include "run/runner.hpp"
-#include "run/stop.hpp"
+#include "run/run_jobs.hpp"
 #include "scene/scene_io.hpp"
 #include "study/impact_measure.hpp"
 #include "study/mesh_inertia.hpp"
@@ -42,13 +37,6 @@ oracle::DroppedBlock dropped_of(const Scene& scene) {
     const int b = scene.reference->block;
     return {cases::block_mass(scene, b), scene.contact.kn * cases::contact_area(scene), cases::gravity(scene),
             scene.reference->values.at("gap")};
-}
-
-double median(std::vector<double> v) {
-    if (v.empty()) return NAN;
-    std::sort(v.begin(), v.end());
-    const size_t m = v.size() / 2;
-    return v.size() % 2 ? v[m] : 0.5 * (v[m - 1] + v[m]);
 }
 
 }  // namespace
@@ -137,8 +125,7 @@ StudyPoint inertia_point(const StudyCase& c, const std::string& scheme, int n, c
 }
 
 std::vector<StudyPoint> run_study(const std::vector<StudyCase>& cases, const StudyOptions& options,
-                                  const BackendFactory& make, const EngineInertia& engine) {
-    struct Job { size_t point; int repeat; };
+                                  const std::vector<BackendInfo>& backends, const EngineInertia& engine) {
     std::vector<StudyPoint> points;
     std::vector<Scene> scenes;
     for (const auto& c : cases) {
@@ -150,76 +137,60 @@ std::vector<StudyPoint> run_study(const std::vector<StudyCase>& cases, const Stu
                 scenes.push_back(point_scene(c, s, n));
             }
     }
-    std::vector<Job> jobs;
-    for (int r = 0; r < std::max(1, options.repeats); ++r)
-        for (size_t i = 0; i < points.size(); ++i) jobs.push_back({i, r});
-    // first runs before repeats, the costliest first, so that the workers finish together
-    std::stable_sort(jobs.begin(), jobs.end(), [&](const Job& a, const Job& b) {
-        auto w = [&](const Job& j) {
-            const auto& d = points[j.point].divisions;
-            return double(d[0] * d[1] * d[2]) * d[0] * scenes[j.point].run.duration;
-        };
-        return a.repeat != b.repeat ? a.repeat < b.repeat : w(a) > w(b);
-    });
-    std::vector<std::vector<double>> walls(points.size());
-    std::atomic<size_t> next{0};
-    std::mutex mutex;
-    size_t done = 0;
-    auto worker = [&] {
-        for (size_t k; !stop_requested() && (k = next++) < jobs.size();) {
-            const Job job = jobs[k];
-            StudyPoint& p = points[job.point];
-            {   // a repeat only for runs under kRepeatBelow s: a long run's time is steady enough
-                std::lock_guard<std::mutex> lock(mutex);
-                if (job.repeat > 0 && (walls[job.point].empty() || walls[job.point][0] >= kRepeatBelow)) {
-                    ++done;
-                    continue;
-                }
-            }
-            const Scene& scene = scenes[job.point];
-            RunResult result;
-            std::string error;
-            try {
-                auto backend = make();
-                result = run_scene(*backend, scene, RunOptions{});
-            } catch (const std::exception& e) {
-                error = e.what();
-            }
-            std::lock_guard<std::mutex> lock(mutex);
-            ++done;
-            if (!options.quiet)
-                std::cerr << "study " << done << "/" << jobs.size() << ": " << p.case_name << " " << p.scheme
-                          << " n=" << p.n << " " << result.wall_seconds << " s\n";
-            if (!error.empty()) { p.status = error; continue; }
-            walls[job.point].push_back(result.wall_seconds);
-            if (job.repeat != 0) continue;
-            // runs are deterministic: the first repeat gives the physics
-            p.status = result.status == RunStatus::completed ? "completed" : result.message;
-            p.duration = scene.run.duration;
-            p.dt = result.dt;
-            p.steps = result.steps;
-            const auto& d = p.divisions;
-            p.element_updates = p.scheme == "rigid" ? 0 : result.steps * d[0] * d[1] * d[2];
-            const int f = cases::free_index(scene, scene.reference->block);
-            if (is_rocking(scene)) {
-                // θ fitted over 30 ms before; after: skip 5 ms of contact transient, fit 30 ms
-                const auto imp = first_rocking_impact(result.samples, f, cases::rocking_axis(scene), 0.005, 0.03);
-                if (imp.found) {
-                    p.t_impact = imp.time;
-                    p.omega_ratio = imp.ratio;
-                } else if (p.status == "completed") {
-                    p.status = "no impact within the run";
-                }
-            } else {
-                const double z0 = scene.blocks.at(size_t(scene.reference->block)).position.z();
-                p.bounce = bounce_period(result.samples, f, z0 - scene.reference->values.at("gap"));
-            }
-        }
+    // the costliest first, so that the workers finish together
+    std::vector<size_t> order(points.size());
+    for (size_t i = 0; i < order.size(); ++i) order[i] = i;
+    auto cost = [&](size_t i) {
+        const auto& d = points[i].divisions;
+        return double(d[0] * d[1] * d[2]) * d[0] * scenes[i].run.duration;
     };
-    std::vector<std::thread> pool;
-    for (int j = 0; j < std::max(1, options.jobs); ++j) pool.emplace_back(worker);
-    for (auto& t : pool) t.join();
-    for (size_t i = 0; i < points.size(); ++i) points[i].wall_seconds = median(walls[i]);
+    std::stable_sort(order.begin(), order.end(), [&](size_t a, size_t b) { return cost(a) > cost(b); });
+    std::vector<RunSpec> jobs;
+    for (size_t i : order) {
+        RunSpec s;
+        s.scene = &scenes[i];
+        s.backend = "dem";
+        s.repeats = std::max(1, options.repeats);
+        s.label = points[i].case_name + " " + points[i].scheme + " n=" + std::to_string(points[i].n);
+        jobs.push_back(std::move(s));
+    }
+    JobsOptions jo;
+    jo.jobs = options.jobs;
+    jo.quiet = options.quiet;
+    jo.tag = "study";
+    jo.repeat_below = kRepeatBelow;   // a long run's time is steady enough
+    run_jobs(jobs, backends, jo, [&](size_t k, JobResult& r) {
+        const size_t i = order[k];
+        StudyPoint& p = points[i];   // each job writes its own point
+        const Scene& scene = scenes[i];
+        const RunResult& result = r.result;
+        p.wall_seconds = r.median_wall;
+        if (r.outcome == Outcome::refused || r.outcome == Outcome::failed) {
+            p.status = r.message;
+            return;
+        }
+        // runs are deterministic: the first repeat gives the physics
+        p.status = r.outcome == Outcome::completed ? "completed" : r.message;
+        p.duration = scene.run.duration;
+        p.dt = result.dt;
+        p.steps = result.steps;
+        const auto& d = p.divisions;
+        p.element_updates = p.scheme == "rigid" ? 0 : result.steps * d[0] * d[1] * d[2];
+        const int f = cases::free_index(scene, scene.reference->block);
+        if (is_rocking(scene)) {
+            // θ fitted over 30 ms before; after: skip 5 ms of contact transient, fit 30 ms
+            const auto imp = first_rocking_impact(result.samples, f, cases::rocking_axis(scene), 0.005, 0.03);
+            if (imp.found) {
+                p.t_impact = imp.time;
+                p.omega_ratio = imp.ratio;
+            } else if (p.status == "completed") {
+                p.status = "no impact within the run";
+            }
+        } else {
+            const double z0 = scene.blocks.at(size_t(scene.reference->block)).position.z();
+            p.bounce = bounce_period(result.samples, f, z0 - scene.reference->values.at("gap"));
+        }
+    });
     return points;
 }
 

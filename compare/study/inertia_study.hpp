@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-#include "backend/backend.hpp"
+#include "backend/backend_info.hpp"
 
 namespace cairn::study {
 
@@ -57,8 +57,6 @@ struct StudyPoint {
     double ratio_error() const { return omega_ratio / omega_ratio_housner - 1.0; }
 };
 
-/// makes the dem backend
-using BackendFactory = std::function<std::unique_ptr<Backend>()>;
 /// the engine's own rotational inertia (kg·m², block axes, about the centre) of block b of a scene
 /// as it would assemble it; empty = not asked
 using EngineInertia = std::function<Mat3(const Scene& scene, int block)>;
@@ -81,8 +79,9 @@ Scene point_scene(const StudyCase& c, const std::string& scheme, int n);
 /// the inertia columns of a point (no run)
 StudyPoint inertia_point(const StudyCase& c, const std::string& scheme, int n, const EngineInertia& engine);
 
-/// run the study: every case × scheme × n, plus one rigid point per case
+/// run the study on the run layer with dem of `backends`: every case × scheme × n, plus one rigid
+/// point per case
 std::vector<StudyPoint> run_study(const std::vector<StudyCase>& cases, const StudyOptions& options,
-                                  const BackendFactory& make, const EngineInertia& engine);
+                                  const std::vector<BackendInfo>& backends, const EngineInertia& engine);
 
 }  // namespace cairn::study

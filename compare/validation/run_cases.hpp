@@ -7,20 +7,16 @@
 #include <string>
 #include <vector>
 
-#include "backend/backend.hpp"
+#include "backend/backend_info.hpp"
 #include "cases/case_analysis.hpp"
+#include "run/run_jobs.hpp"
 #include "validation/plan.hpp"
 
 namespace cairn::validation {
 
-/// makes a backend by registry name (the app passes make_backend; compare never sees engines)
-using BackendFactory = std::function<std::unique_ptr<Backend>(const std::string&)>;
-
-/// How one run ended.
-enum class Outcome { completed, unstable, refused, failed };
-
-/// "completed", "unstable", "cannot represent", "failed"
-const char* to_string(Outcome o);
+/// a run's outcome in the reports: "completed", "unstable", "interrupted", "cannot represent"
+/// (refused), "failed" (an input error or any other failure)
+const char* outcome_text(Outcome o);
 
 /// One case × variant.
 struct CaseRun {
@@ -54,18 +50,16 @@ struct RunPlan {
     std::string final_dir;
     std::vector<std::string> overrides;   ///< "key=value" applied to every scene (recorded in run.json)
     std::vector<std::string> scene_paths; ///< per case, the scene file (for run.json)
-    int jobs = 2;                    ///< threads
-    /// backends whose runs must not overlap (a library with global state, e.g. ODE built without
-    /// per-thread collision data)
-    std::vector<std::string> serial_backends;
+    int jobs = 2;                    ///< runs at a time (at most the cores)
     bool quiet = false;              ///< no progress lines on stderr
     /// called from the pool threads with a run's index (cases and runs in plan order) and its
     /// fraction done, 1 once it ended; the callee serialises; empty = none
     std::function<void(size_t run, double fraction)> progress;
 };
 
-/// run every listed run of the plan, then analyse each against its case and diff the variants;
-/// fills the CaseRun entries in place; once a stop is requested (run/stop.hpp) no new run starts
-void run_plan(RunPlan& plan, const BackendFactory& make);
+/// run every listed run of the plan on the run layer (run/run_jobs.hpp), then analyse each against
+/// its case and diff the variants; fills the CaseRun entries in place; once a stop is requested
+/// (run/stop.hpp) no new run starts
+void run_plan(RunPlan& plan, const std::vector<BackendInfo>& backends);
 
 }  // namespace cairn::validation

@@ -29,6 +29,12 @@ public:
     void sample(const Sample& s) override { samples.push_back(s); }
 };
 
+/// Drops every sample (a run timed for its wall time only).
+class NullSink : public SampleSink {
+public:
+    void sample(const Sample&) override {}
+};
+
 /// Hands each call to several sinks in order.
 class TeeSink : public SampleSink {
 public:

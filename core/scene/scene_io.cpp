@@ -89,6 +89,16 @@ void apply_override(toml::table& root, const Override& o, scene_detail::Sources&
 
 }  // namespace
 
+void apply_model(Scene& scene, const std::string& model) {
+    if (model.empty()) return;
+    BlockModel m;
+    if (model == "rigid") m = BlockModel::rigid;
+    else if (model == "deformable") m = BlockModel::deformable;
+    else throw Error("--model " + model + ": expected rigid or deformable");
+    for (auto& b : scene.blocks)
+        if (!b.fixed) b.model = m;
+}
+
 Override parse_override(const std::string& text) {
     auto eq = text.find('=');
     if (eq == std::string::npos)

@@ -28,6 +28,10 @@ Scene load_scene(const std::string& path, const std::vector<Override>& overrides
 Scene parse_scene(const std::string& toml_text, const std::string& source,
                   const std::vector<Override>& overrides = {});
 
+/// set every free block's model: "rigid" or "deformable"; empty = the scene's own; throws
+/// cairn::Error naming --model for any other value
+void apply_model(Scene& scene, const std::string& model);
+
 /// the validated scene with every parameter (after overrides), for run.json
 nlohmann::json scene_to_json(const Scene& scene);
 

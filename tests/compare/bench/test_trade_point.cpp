@@ -98,10 +98,16 @@ TEST_CASE("bench trade: a rerun runs only the points missing from trade.csv", "[
             << trade_csv_row(pt("bullet-matched", "kn=3e+07 dt=0.0001", 2.0, 0.02));
     }
     std::vector<std::string> made;
-    const BackendFactory make = [&](const std::string& name) -> std::unique_ptr<Backend> {
-        made.push_back(name);
-        throw Error("test: " + name + " refuses");
-    };
+    std::vector<BackendInfo> make;
+    for (const std::string name : {"dem", "bullet", "ode"}) {
+        BackendInfo b;
+        b.name = name;
+        b.make = [&made, name]() -> std::unique_ptr<Backend> {
+            made.push_back(name);
+            throw Error("test: " + name + " refuses");
+        };
+        make.push_back(b);
+    }
     const auto pts = run_trade({a, b, c}, csv, TradeOptions{3, 2, true}, make);
     // only the missing point ran (and was refused); the file now holds all three
     REQUIRE(made.size() == 1);

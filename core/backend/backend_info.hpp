@@ -1,0 +1,40 @@
+#pragma once
+/// What every layer may know about a backend: its name, what it represents of a scene, whether two
+/// of its runs may overlap, how it is made. The registry (backends/registry.hpp) is the only place
+/// that lists the backends; compare and the run layer take these facts as values.
+
+#include <functional>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "backend/backend.hpp"
+#include "backend/capabilities.hpp"
+
+namespace cairn {
+
+/// How a backend's contact works.
+enum class ContactModel {
+    penalty,   ///< springs per hitting point (kn per unit area), elastic-then-Coulomb shear
+    rigid,     ///< a rigid-contact solver (impulses or constraints); "matched" mode adds springs
+};
+
+/// makes a new backend
+using BackendFactory = std::function<std::unique_ptr<Backend>()>;
+
+/// The facts of one backend.
+struct BackendInfo {
+    std::string name;                           ///< registry name, e.g. "dem"
+    std::string description;                    ///< one line
+    std::vector<FeatureSupport> capabilities;   ///< the capability matrix row
+    ContactModel contact = ContactModel::rigid;     ///< its own contact
+    std::string solver;                         ///< its contact solver and settings, one line
+    /// two runs may go on at once in one process (false: a library with global state)
+    bool thread_safe = true;
+    BackendFactory make;                        ///< a new backend
+};
+
+/// the facts named `name` in `list`; throws cairn::Error naming the available ones otherwise
+const BackendInfo& find_backend(const std::vector<BackendInfo>& list, const std::string& name);
+
+}  // namespace cairn
