@@ -20,7 +20,6 @@
 #include "study/inertia_study.hpp"
 #include "study/overturning_study.hpp"
 #include "study/record_study.hpp"
-#include "pool_backends.hpp"
 #include "scene/scene_io.hpp"
 #include "suggest.hpp"
 #include "study/study_report.hpp"
@@ -28,6 +27,10 @@
 namespace cairn {
 
 namespace {
+
+/// true for a backend whose runs must not overlap (its registry facts)
+bool not_thread_safe(const std::string& name) { return !find_backend(available_backends(), name).thread_safe; }
+
 
 /// the dem engine's own assembled rotational inertia of block b (about its centre, block axes)
 Mat3 dem_inertia(const Scene& scene, int b) {
@@ -201,10 +204,10 @@ int study_overturning_command(const StudyOverturningOptions& o) {
         std::cerr << "error: " << e.what() << "\n";
         return kExitBadInput;
     }
-    const auto factory = pool_backend_factory(setup.jobs);
+    setup.exclusive = not_thread_safe;
     study::OverturningResult result;
     try {
-        result = study::run_overturning(setup, factory);
+        result = study::run_overturning(setup, make_backend);
     } catch (const Error& e) {
         if (stop_requested()) return interrupted_keeping("study", o.out_dir);
         std::cerr << "error: " << e.what() << "\n";
@@ -255,7 +258,8 @@ int study_record_command(const StudyRecordOptions& o) {
     }
     study::RecordResult result;
     try {
-        result = study::run_record_study(setup, pool_backend_factory(setup.jobs));
+        setup.exclusive = not_thread_safe;
+        result = study::run_record_study(setup, make_backend);
     } catch (const Error& e) {
         if (stop_requested()) return interrupted_keeping("study", o.out_dir);
         std::cerr << "error: " << e.what() << "\n";

@@ -1,55 +1,43 @@
 #include "sweep_pool.hpp"
 
-#include <algorithm>
-#include <atomic>
 #include <exception>
 #include <mutex>
-#include <thread>
 
-#ifdef _OPENMP
-#include <omp.h>
-#endif
-
+#include "registry.hpp"
+#include "run/core_pool.hpp"
 #include "run/stop.hpp"
 
 namespace cairn {
 
 void run_sweep_pool(const std::vector<RunJob>& jobs, int threads,
                     const std::function<void(std::size_t, const JobOutcome&)>& done) {
-    std::atomic<std::size_t> next{0};
-    std::mutex report, ode;
-    std::exception_ptr failure;   // ODE keeps global state: its runs take turns
-    const int n = std::max(1, std::min<int>(threads, int(jobs.size())));
-    auto worker = [&] {
-#ifdef _OPENMP
-        if (n > 1) omp_set_num_threads(1);   // jobs × threads never exceed the cores
-#endif
-        for (std::size_t j; !stop_requested() && (j = next++) < jobs.size();) {
+    std::mutex report;
+    std::exception_ptr failure;
+    run_on_cores(
+        jobs.size(), threads,
+        [&](std::size_t j) {
             JobOutcome o;
             try {
-                if (jobs[j].backend == "ode") {
-                    std::lock_guard<std::mutex> g(ode);
-                    o = execute_run(jobs[j]);
-                } else {
-                    o = execute_run(jobs[j]);
-                }
+                o = execute_run(jobs[j]);
             } catch (const std::exception& e) {   // a write error: the run counts as failed
-                o.status = JobStatus::input_error;
+                o.status = JobStatus::failed;
                 o.message = std::string("unexpected failure: ") + e.what();
             }
             std::lock_guard<std::mutex> g(report);
-            if (failure) continue;
+            if (failure) return;
             try {
                 done(j, o);
             } catch (...) {   // the first failure to record a result ends the pool, then propagates
                 failure = std::current_exception();
                 request_stop();
             }
-        }
-    };
-    std::vector<std::thread> pool;
-    for (int i = 0; i < n; ++i) pool.emplace_back(worker);
-    for (auto& t : pool) t.join();
+        },
+        // a backend that is not thread-safe (its registry facts) runs one job at a time
+        [&](std::size_t j) {
+            for (const auto& b : available_backends())
+                if (b.name == jobs[j].backend) return !b.thread_safe;
+            return false;   // an unknown name: execute_run refuses it
+        });
     if (failure) std::rethrow_exception(failure);
 }
 

@@ -470,6 +470,9 @@ BackendInfo siconos_backend_info() {
     info.description =
         "Siconos 4.4 non-smooth contact dynamics: Moreau–Jean, Signorini and Coulomb cone, Newton impact; rigid only";
     info.capabilities = siconos_capabilities();
+    info.solver = "Moreau-Jean theta 0.5, FrictionContact(3) by NSGS, tolerance 1e-5";
+    // Siconos 4.4's thread safety is not established: one run at a time
+    info.thread_safe = false;
     info.make = [] { return std::make_unique<SiconosBackend>(); };
     return info;
 }

@@ -4,7 +4,7 @@
 /// impact law.
 
 #include "backend/backend.hpp"
-#include "registry.hpp"
+#include "backend/backend_info.hpp"
 
 namespace cairn {
 

@@ -9,18 +9,18 @@ namespace cairn {
 std::vector<FeatureSupport> siconos_capabilities() {
     using S = Support;
     return {
-        {"penalty stiffness kn·A", S::none,
+        {Feature::penalty_stiffness, S::none,
          "rigid unilateral contact (Signorini condition at velocity level, Moreau–Jean): no normal spring, no "
          "matched mode"},
-        {"normal contact damping", S::none, "Newton impact law with restitution contact.restitution instead"},
-        {"elastic stick before slip", S::none, "Coulomb friction as a complementarity (rigid stick): no shear spring"},
-        {"friction shape", S::exact, "the exact Coulomb cone per contact point (3-D friction-contact problem), no "
+        {Feature::normal_damping, S::none, "Newton impact law with restitution contact.restitution instead"},
+        {Feature::elastic_stick, S::none, "Coulomb friction as a complementarity (rigid stick): no shear spring"},
+        {Feature::friction_shape, S::exact, "the exact Coulomb cone per contact point (3-D friction-contact problem), no "
          "facets"},
-        {"mass-proportional damping", S::approximate,
+        {Feature::mass_damping, S::approximate,
          "forces -alpha·m·v and -alpha·I·omega from the start-of-step velocities"},
-        {"stiffness-proportional damping", S::none, "beta ignored (rigid bodies)"},
-        {"deformable blocks", S::none, "refused: run with --model rigid"},
-        {"general convex hexahedra", S::exact,
+        {Feature::stiffness_damping, S::none, "beta ignored (rigid bodies)"},
+        {Feature::deformable_blocks, S::none, "refused: run with --model rigid"},
+        {Feature::general_hexahedra, S::exact,
          "cairn's face-clipping collider (up to 4 points per pair) handed to Siconos as point contacts"},
     };
 }

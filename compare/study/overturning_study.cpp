@@ -12,6 +12,7 @@
 
 #include "cases/case_util.hpp"
 #include "error.hpp"
+#include "run/core_pool.hpp"
 #include "run/runner.hpp"
 #include "run/sample_sink.hpp"
 #include "run/stop.hpp"
@@ -211,22 +212,8 @@ std::vector<OverturningRun> grid_jobs(const OverturningSetup& s) {
 }
 
 void run_pool(size_t n, int jobs, const std::function<std::string(size_t)>& method,
-              const std::function<void(size_t)>& fn) {
-    std::atomic<size_t> next{0};
-    std::mutex ode;
-    auto worker = [&] {
-        for (size_t k; !stop_requested() && (k = next++) < n;) {
-            if (method(k) == "ode") {
-                std::lock_guard<std::mutex> lock(ode);
-                fn(k);
-            } else {
-                fn(k);
-            }
-        }
-    };
-    std::vector<std::thread> pool;
-    for (int j = 0; j < std::max(1, jobs); ++j) pool.emplace_back(worker);
-    for (auto& t : pool) t.join();
+              const std::function<void(size_t)>& fn, const std::function<bool(const std::string&)>& exclusive) {
+    run_on_cores(n, jobs, fn, [&](size_t k) { return exclusive && exclusive(method(k)); });
 }
 
 std::vector<OverturningRun> run_overturning_jobs(const OverturningSetup& s, const std::vector<OverturningRun>& jobs,
@@ -243,7 +230,7 @@ std::vector<OverturningRun> run_overturning_jobs(const OverturningSetup& s, cons
                       << " a/(g tan a)=" << out[k].level << " "
                       << (out[k].status != "completed" ? out[k].status : out[k].overturned ? "overturned" : "safe") << " "
                       << out[k].wall_seconds << " s\n";
-    });
+    }, s.exclusive);
     if (stop_requested()) throw Error("the overturning study was interrupted");
     return out;
 }

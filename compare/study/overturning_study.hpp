@@ -27,6 +27,8 @@ struct OverturningSetup {
     int bisect = 10;                   ///< bisection steps of each minimum overturning amplitude
     std::vector<std::string> backends; ///< registry names
     int jobs = 2;                      ///< runs at a time
+    /// backends whose runs must not overlap (not thread-safe), by name; empty = none
+    std::function<bool(const std::string&)> exclusive;
     bool quiet = false;                ///< no progress lines
     double tail = 5.0;                 ///< s simulated after the pulse at most (runs stop once decided)
 };
@@ -80,13 +82,13 @@ struct VerdictRule {
     double alpha = 0.0;       ///< rad
 };
 
-/// call fn(i) for i in [0, n) on `jobs` threads, the calls of a method named "ode" (Debian's ODE
-/// keeps its collision data global) one at a time; `method(i)` names job i's backend; no new call
-/// starts once a stop is requested
+/// call fn(i) for i in [0, n) on the run layer's pool (run_on_cores, at most `jobs` at a time), the
+/// calls of a backend for which exclusive(name) is true (not thread-safe) one at a time;
+/// `method(i)` names job i's backend; no new call starts once a stop is requested
 void run_pool(size_t n, int jobs, const std::function<std::string(size_t)>& method,
-              const std::function<void(size_t)>& fn);
+              const std::function<void(size_t)>& fn, const std::function<bool(const std::string&)>& exclusive);
 
-/// run every job (backend, ratio, level) on a pool of `jobs` threads (ODE's runs one at a time);
+/// run every job (backend, ratio, level) on the pool (runs of a backend that is not thread-safe one at a time);
 /// deterministic: results are in job order whatever the thread count
 using BackendMaker = std::function<std::unique_ptr<Backend>(const std::string&)>;
 std::vector<OverturningRun> run_overturning_jobs(const OverturningSetup& s, const std::vector<OverturningRun>& jobs,

@@ -105,7 +105,7 @@ RecordResult run_record_study(const RecordSetup& s, const RecordBackendMaker& ma
         }
         std::lock_guard<std::mutex> lock(print);
         if (!s.quiet) std::cerr << "record: " << h.method << " " << h.status << "\n";
-    });
+    }, s.exclusive);
     if (stop_requested()) throw Error("the record study was interrupted");
     for (auto& h : runs) res.histories.push_back(std::move(h));
     for (size_t i = 1; i < res.histories.size(); ++i)

@@ -19,7 +19,9 @@ struct RecordSetup {
     std::string scene_source;          ///< a path, or "--block"
     std::vector<Override> overrides;   ///< --set, applied to every backend scene
     std::vector<std::string> backends;
-    int jobs = 2;
+    int jobs = 2;                      ///< runs at a time
+    /// backends whose runs must not overlap (not thread-safe), by name; empty = none
+    std::function<bool(const std::string&)> exclusive;
     bool quiet = false;
     double output_interval = 0.005;    ///< s between compared samples
 };

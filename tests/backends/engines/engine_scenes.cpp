@@ -44,7 +44,7 @@ bool has_matched_mode(const std::string& engine) {
     for (const auto& b : available_backends())
         if (b.name == engine)
             for (const auto& f : b.capabilities)
-                if (f.feature == "penalty stiffness kn·A") return f.support != Support::none;
+                if (f.feature == Feature::penalty_stiffness) return f.support != Support::none;
     return true;
 }
 
