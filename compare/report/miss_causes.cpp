@@ -69,6 +69,10 @@ MissCause miss_cause(const Scene& scene, const validation::Variant& variant, con
     if (variant.backend == "mujoco" && variant.contact_mode == "rigid" && metric.name == "slip while held")
         return {true, "MuJoCo's contacts are soft constraints (solref/solimp): friction acts through a regularised "
                       "force that needs a small sliding velocity, so a held block creeps; its size is the measured value"};
+    if (variant.backend == "dem" && metric.name == "energy closure")
+        return {true, "dem books the work of slip, dashpots and impacts to first order in the step: the "
+                      "unaccounted energy halves with dt (4.5, 2.5, 1.3 J at dt_safety 0.1, 0.05, 0.025 on rocking; "
+                      "docs/validation.md); the motion itself is judged separately"};
     return {false, "no known engine limitation explains it: an engine or reference defect to investigate"};
 }
 
