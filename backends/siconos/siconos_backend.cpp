@@ -11,6 +11,7 @@
 #include <map>
 #include <sstream>
 
+#include "applied_loads.hpp"
 #include "engine_settings.hpp"
 #include "error.hpp"
 #include "rigid_blocks.hpp"
@@ -352,14 +353,11 @@ void SiconosBackend::update_contacts() {
 }
 
 double SiconosBackend::load_power() const {
-    double power = 0.0;
-    for (const LoadDef& l : scene_.loads) {
-        const double f = l.factor(t_);
-        if (f == 0.0 || !bodies_[l.block]) continue;
-        const Vec3 p = block_point_world(blocks_[l.block], com(l.block), orientation(l.block), l.point);
-        power += f * l.force.dot(point_velocity(l.block, p));
-    }
-    return power;
+    std::vector<AppliedLoad> loads;
+    applied_loads(scene_, t_, loads);
+    return cairn::load_power(loads, [&](int block, const Vec3& point) {
+        return point_velocity(block, block_point_world(blocks_[block], com(block), orientation(block), point));
+    });
 }
 
 StepStatus SiconosBackend::step() {
