@@ -38,7 +38,9 @@ const std::map<std::string, std::vector<Param>>& generator_params() {
           {"radius", "2.25m", Unit::length, "centreline radius R"},
           {"thickness", "0.5m", Unit::length, "radial thickness t"},
           {"depth", "0.5m", Unit::length, "depth along y"},
-          {"angle", "180deg", Unit::angle, "angle the arch subtends: 180deg semicircular, less segmental"}}},
+          {"angle", "180deg", Unit::angle, "angle the arch subtends: 180deg semicircular, less segmental"},
+          {"pointed", "0", Unit::ratio,
+           "pointed (two-centred) arch: each half's centre offset from the axis as a fraction of the span 2R; 0 round"}}},
         {"wall",
          {{"courses", "6", Unit::count, "courses"},
           {"bricks", "6", Unit::count, "whole bricks per course"},
@@ -147,6 +149,9 @@ Scene generate(const std::string& kind, const std::map<std::string, double>& v) 
         if (a.thickness >= 2 * a.radius) throw Error("--thickness must be less than twice --radius");
         if (a.angle > M_PI + 1e-12) throw Error("--angle must be at most 180deg");
         a.angle = std::min(a.angle, M_PI);
+        a.pointed = v.at("pointed");
+        if (a.pointed > 1.0) throw Error("--pointed must be at most 1 (centres a span beyond the axis)");
+        if (a.pointed > 0.0 && a.angle < M_PI) throw Error("--pointed needs a full arch: --angle 180deg");
         add_arch(s, a);
         s.description = "Arch of " + std::to_string(a.voussoirs) + " voussoirs on two fixed springers (cairn make arch)";
     } else if (kind == "wall") {

@@ -38,9 +38,31 @@ Corners springer(const ArchSpec& arch, int side) {
     return c;
 }
 
+/// pointed arch: the intrados (r = R − t/2) or extrados point of joint k (0 … N, left to right) at y.
+/// The left half is centred at x = c = pointed·2R with radius r + c, measured from the −x axis;
+/// the right half is its mirror image
+Vec3 pointed_joint(const ArchSpec& arch, int k, double r, double y) {
+    const double c = arch.pointed * 2.0 * arch.radius;
+    const int n = arch.voussoirs;
+    const int side = 2 * k < n ? -1 : 1;
+    const int from_left = side < 0 ? k : n - k;
+    // the centreline reaches the axis x = 0 at the crown angle acos(c / (R + c))
+    const double crown = std::acos(c / (arch.radius + c));
+    // an even N's crown joint is vertical: each face point where its own circle meets x = 0
+    const double a = 2 * k == n ? std::acos(c / (r + c)) : crown * 2.0 * from_left / n;
+    return {side * ((r + c) * std::cos(a) - c), y, (r + c) * std::sin(a)};
+}
+
 }  // namespace
 
 Corners arch_voussoir(const ArchSpec& arch, int i) {
+    if (arch.pointed > 0.0) {
+        const double ri = arch.radius - 0.5 * arch.thickness, re = arch.radius + 0.5 * arch.thickness;
+        const double y = 0.5 * arch.depth;
+        auto p = [&](int k, double r, double yy) { return pointed_joint(arch, k, r, yy); };
+        return {p(i, ri, -y), p(i + 1, ri, -y), p(i + 1, ri, y), p(i, ri, y),
+                p(i, re, -y), p(i + 1, re, -y), p(i + 1, re, y), p(i, re, y)};
+    }
     const double s = springing_angle(arch);
     const double a0 = s + arch.angle * i / arch.voussoirs, a1 = s + arch.angle * (i + 1) / arch.voussoirs;
     const double ri = arch.radius - 0.5 * arch.thickness, re = arch.radius + 0.5 * arch.thickness;

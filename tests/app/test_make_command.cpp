@@ -44,3 +44,27 @@ TEST_CASE("cairn make refuses a bad parameter with the option and its value", "[
     CHECK_FALSE(fs::exists(dir / "arch.toml"));
     CHECK_FALSE(fs::exists(dir / "t.toml"));
 }
+
+TEST_CASE("cairn make then cairn compare on a small generated wall lists every variant that ran", "[app][make][compare]") {
+    const auto dir = fresh_dir("make_compare");
+    const std::string wall = (dir / "wall.toml").string();
+    REQUIRE(run_cairn("make wall --courses 2 --bricks 2 --duration 50ms --out " + wall, dir).exit_code == 0);
+    const fs::path out = dir / "report";
+    const auto r = run_cairn("compare " + wall + " --backends all --jobs 2 --out " + out.string(), dir);
+    INFO(r.err);
+    REQUIRE(r.exit_code == 0);
+    const std::string md = read_file(out / "report.md");
+    CHECK(fs::exists(out / "index.html"));
+    // every variant with a run directory is printed and named in the report; dem runs both cores
+    int variants = 0;
+    for (const auto& run : fs::directory_iterator(out / "runs" / "wall")) {
+        const std::string v = run.path().filename().string();
+        CAPTURE(v);
+        CHECK_THAT(r.out, Contains(v));
+        CHECK_THAT(md, Contains(v));
+        ++variants;
+    }
+    CHECK(fs::exists(out / "runs" / "wall" / "dem-rigid"));
+    CHECK(fs::exists(out / "runs" / "wall" / "dem-deformable"));
+    CHECK(variants >= 2);
+}
