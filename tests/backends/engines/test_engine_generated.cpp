@@ -67,7 +67,9 @@ Generated column() {
     ColumnSpec c{3, 0.3, 0.5, true};
     Scene s = base_scene("column");
     add_column(s, c);
-    Generated g{s.name, through_loader(s)};
+    Generated g;
+    g.label = s.name;
+    g.scene = through_loader(s);
     g.mass = kRho * c.drums * c.width * c.width * c.drum_height;
     g.centre = Vec3(0, 0, 0.5 * c.drums * c.drum_height);   // the slab's top is z = 0
     g.bearing = {pair_of(index_of(g.scene, "base"), index_of(g.scene, "D1")),
@@ -83,7 +85,9 @@ Generated wall() {
     w.bricks = 4;
     Scene s = base_scene("wall");
     add_wall(s, w);
-    Generated g{s.name, through_loader(s)};
+    Generated g;
+    g.label = s.name;
+    g.scene = through_loader(s);
     const double l = w.brick.x(), t = w.brick.y(), h = w.brick.z();
     // half bricks at the ends of odd courses: every course is bricks·l long, the wall a full box
     g.mass = kRho * w.courses * w.bricks * l * t * h;
@@ -124,7 +128,9 @@ Generated arch() {
                                            // least thickness of a semicircular arch (≈ 0.107 R)
     Scene s = base_scene("arch");
     add_arch(s, a);
-    Generated g{s.name, through_loader(s)};
+    Generated g;
+    g.label = s.name;
+    g.scene = through_loader(s);
     const double r1 = a.radius - 0.5 * a.thickness, r2 = a.radius + 0.5 * a.thickness;
     const double phi = a.angle / a.voussoirs;   // angle of one voussoir
     // voussoirs have straight chords between corners on the two circles: each is the difference of
@@ -158,7 +164,8 @@ void check_stands(const Generated& g, const std::string& engine) {
             masses.push_back(mass_properties(b.corners, s.materials[size_t(b.material)].density).mass);
             mass += masses.back();
         }
-    CHECK(mass == Approx(g.mass).epsilon(1e-12));   // the same sum in another order: rounding only
+    // exact up to the rounding of the corners the scene writer prints (as the builder tests)
+    CHECK(mass == Approx(g.mass).epsilon(1e-8));
 
     auto backend = make_backend(engine);
     RunOptions options;
@@ -197,14 +204,29 @@ void check_stands(const Generated& g, const std::string& engine) {
 
 }  // namespace
 
-TEST_CASE("generated column, wall and arch stand on dem and bullet", "[engines][generated]") {
-    const std::string engine = GENERATE(as<std::string>{}, "dem", "bullet");
+namespace {
+
+bool built_in(const std::string& engine) {
     const auto names = all_backend_names();
-    if (std::find(names.begin(), names.end(), engine) == names.end()) {
-        WARN(engine << " is not built into this binary");
-        return;
-    }
+    if (std::find(names.begin(), names.end(), engine) != names.end()) return true;
+    WARN(engine << " is not built into this binary");
+    return false;
+}
+
+}  // namespace
+
+TEST_CASE("generated column and wall stand on dem and bullet", "[engines][generated]") {
+    const std::string engine = GENERATE(as<std::string>{}, "dem", "bullet");
+    if (!built_in(engine)) return;
     SECTION("column of 3 drums") { check_stands(column(), engine); }
     SECTION("running-bond wall of 4 courses") { check_stands(wall(), engine); }
-    SECTION("semicircular arch of 9 voussoirs") { check_stands(arch(), engine); }
+}
+
+// the arch's bound counts the closure of its joints only, not their rotation under an eccentric
+// thrust (up to 2δ/t per joint at the middle third's edge, on a lever of up to R): both engines
+// settle beyond it and stay there (dem's crown 1.2 mm, Bullet's matched 6 mm after 1 s)
+TEST_CASE("generated arch stands on dem and bullet", "[engines][generated]") {
+    const std::string engine = GENERATE(as<std::string>{}, "dem", "bullet");
+    if (!built_in(engine)) return;
+    check_stands(arch(), engine);
 }
