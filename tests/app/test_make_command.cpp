@@ -41,6 +41,12 @@ TEST_CASE("cairn make refuses a bad parameter with the option and its value", "[
     r = run_cairn("make arch --thickness 5m" + arch, dir);
     CHECK(r.exit_code == 2);
     CHECK_THAT(r.err, Contains("--thickness must be less than twice --radius"));
+    r = run_cairn("make arch --pointed 0.1 --angle 120deg" + arch, dir);
+    CHECK(r.exit_code == 2);
+    CHECK_THAT(r.err, Contains("--pointed needs a full arch: --angle 180deg"));
+    r = run_cairn("make arch --pointed 2" + arch, dir);
+    CHECK(r.exit_code == 2);
+    CHECK_THAT(r.err, Contains("--pointed must be at most 1"));
     CHECK_FALSE(fs::exists(dir / "arch.toml"));
     CHECK_FALSE(fs::exists(dir / "t.toml"));
 }
