@@ -6,6 +6,7 @@
 #include "commands.hpp"
 #include "error.hpp"
 #include "registry.hpp"
+#include "run/core_pool.hpp"
 #include "run/stop.hpp"
 #include "scenes.hpp"
 
@@ -68,12 +69,12 @@ int run_all_command(const RunAllOptions& options) {
         return kExitBadInput;
     }
 
+    // every scene on every backend, in table order
+    std::vector<RunJob> jobs;
     std::vector<Row> rows;
-    bool failed = false;
     const bool progress = !options.quiet && stderr_is_terminal();
-    for (const auto& s : scenes) {
+    for (const auto& s : scenes)
         for (const auto& b : backends) {
-            if (stop_requested()) break;   // interrupted: no new run; finished ones are in place
             RunJob job;
             job.scene = s.path;
             job.backend = b;
@@ -81,10 +82,22 @@ int run_all_command(const RunAllOptions& options) {
             job.force = true;   // run-all owns its output tree and replaces its own earlier outputs
             job.progress = progress;
             job.label = s.name + " on " + b;
-            if (!options.quiet) std::cerr << "running " << job.label << "\n";
-            Row row{s.name, b, "", {}, false};
+            jobs.push_back(std::move(job));
+            rows.push_back(Row{s.name, b, "", {}, false});
+        }
+
+    // one run at a time on the run layer's pool (all the cores for its OpenMP threads), so the
+    // progress lines stay one after another; runs of a backend that is not thread-safe (its
+    // registry facts) never overlap. Once a stop is requested no new run starts.
+    std::vector<char> started(jobs.size(), 0);
+    run_on_cores(
+        jobs.size(), 1,
+        [&](std::size_t i) {
+            started[i] = 1;
+            if (!options.quiet) std::cerr << "running " << jobs[i].label << "\n";
+            Row& row = rows[i];
             try {
-                row.outcome = execute_run(job);
+                row.outcome = execute_run(jobs[i]);
                 switch (row.outcome.status) {
                     case JobStatus::completed:
                         row.status = row.outcome.energy_drift ? "drift" : "completed";
@@ -106,18 +119,24 @@ int run_all_command(const RunAllOptions& options) {
                     case JobStatus::input_error:
                     case JobStatus::failed:
                         row.status = "FAILED";
-                        failed = true;
                         break;
                 }
             } catch (const std::exception& e) {
                 row.status = "FAILED";
                 row.outcome.message = std::string("unexpected failure: ") + e.what();
-                failed = true;
             }
-            rows.push_back(std::move(row));
-        }
+        },
+        [&](std::size_t i) { return !find_backend(available_backends(), jobs[i].backend).thread_safe; });
+
+    // the runs that started (an interrupted command leaves the rest out of the table)
+    std::vector<Row> ran;
+    bool failed = false;
+    for (std::size_t i = 0; i < rows.size(); ++i) {
+        if (!started[i]) continue;
+        failed = failed || rows[i].status == "FAILED";
+        ran.push_back(std::move(rows[i]));
     }
-    print_table(rows);
+    print_table(ran);
     const auto where = std::filesystem::path(options.out_dir) / "<scene>" / "<backend>";
     std::printf("\noutputs in %s\n", where.string().c_str());
     if (stop_requested()) {

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "backend/backend_info.hpp"
+#include "run/runner.hpp"   // kDriftBound: the runner's energy_drift bound, read by the classifier
 
 namespace cairn::bench {
 
@@ -16,17 +17,13 @@ namespace cairn::bench {
 enum class StabilityClass {
     stable,     ///< completed, energy closed (where booked), inside the oracle's tolerance
     unstable,   ///< blew up: the runner's RunStatus::unstable (or the run failed)
-    drifting,   ///< completed, but the energy balance error passed kDriftBound of the energy scale
+    drifting,   ///< completed, but the energy balance error passed kDriftBound (run/runner.hpp) of the energy scale
     wrong,      ///< completed and closed, but outside the oracle's tolerance
     refused,    ///< the backend cannot build the scene
 };
 
 /// "stable", "unstable", "drifting", "wrong", "refused"
 const char* to_string(StabilityClass c);
-
-/// the energy balance error (fraction of the runner's energy scale, architecture.md) past which a
-/// completed run is drifting: 1 %, the runner's own energy_drift bound
-constexpr double kDriftBound = 0.01;
 
 /// What the classifier reads of one run.
 struct StabilityInput {

@@ -16,8 +16,6 @@ namespace {
 
 /// energy growth beyond this fraction of the scale has no source: the run is unstable
 constexpr double kGrowthBound = 1.0;
-/// a balance error beyond this fraction of the motion's energy is flagged as drift (the run goes on)
-constexpr double kDriftBound = 0.01;
 /// wall time between progress calls, s
 constexpr double kProgressEvery = 0.5;
 

@@ -13,6 +13,10 @@
 
 namespace cairn {
 
+/// a balance error beyond this fraction of the motion's energy (EnergyBounds::motion) sets
+/// RunResult::energy_drift (the run goes on): 1 %
+constexpr double kDriftBound = 0.01;
+
 /// How a run ended: every step taken, stopped because it went unstable, or stopped on request.
 enum class RunStatus { completed, unstable, interrupted };
 
@@ -31,7 +35,7 @@ struct RunResult {
     long long steps = 0;             ///< steps taken
     int output_every = 1;            ///< steps between samples
     double wall_seconds = 0.0;       ///< wall time of the stepping loop, s
-    bool energy_drift = false;       ///< balance error exceeded the drift bound at some sample
+    bool energy_drift = false;       ///< balance error exceeded kDriftBound at some sample
     double max_balance_error = 0.0;  ///< largest |balance error| relative to the energy scale
 };
 

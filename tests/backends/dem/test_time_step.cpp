@@ -1,0 +1,115 @@
+// The contact springs' critical step of a free cube resting on one side, against the closed forms
+// of its spring-mass modes, and the backend's automatic step (the safety factor times it).
+#include <catch2/catch.hpp>
+
+#include <cmath>
+
+#include "dem/block_builder.hpp"
+#include "dem/time_step.hpp"
+#include "support/scene_builder.hpp"
+#include "dem_test_util.hpp"
+
+using namespace cairn;
+
+namespace {
+
+// eigenvalues from a symmetric eigensolver: relative round-off of a few ulp of the largest entry
+constexpr double kEigenTol = 1e-12;
+
+constexpr double kEdge = 0.5;                       // m
+constexpr double kArea = kEdge * kEdge;             // m²
+constexpr double kMass = 2600.0 * kEdge * kEdge * kEdge;   // kg, the stone's density
+
+// a scene with one free cube of edge kEdge (and a fixed base under it when `base`)
+Scene cube_scene(ContactScheme scheme, double kn, double ks, bool base = false) {
+    Scene s = test::stone_scene();
+    s.contact.scheme = scheme;
+    s.contact.kn = kn;
+    s.contact.ks = ks;
+    add_box(s, "A", Vec3(kEdge, kEdge, kEdge), Vec3(0, 0, 0.5 * kEdge), false);
+    if (base) add_box(s, "base", Vec3(1, 1, 0.5), Vec3(0, 0, -0.25), true);
+    return s;
+}
+
+dem::Block cube(const Scene& s) { return dem::make_block(s.blocks[0], s); }
+
+// largest squared frequency of a cube on one side with springs kn = ks = k (per unit area),
+// integrated exactly over the side: vertical k·A/m, torsion k·A/m, and sliding coupled to
+// rocking (lever h = edge/2 of the shear springs, I = m·edge²/6) whose larger root is
+// (k·A/m)·(3 + √7)/2
+double cube_omega2_equal_springs(double k) { return k * kArea / kMass * (3.0 + std::sqrt(7.0)) / 2.0; }
+
+}  // namespace
+
+TEST_CASE("dem time step: a side's normal springs give the vertical spring-mass frequency", "[dem][time_step]") {
+    // ks = 0: the normal springs alone; vertical k·A/m, rocking k·(edge⁴/12)/(m·edge²/6) = k·A/(2m)
+    const double kn = 3e7;
+    const Scene s = cube_scene(ContactScheme::overlap, kn, 0.0);
+    const auto b = cube(s);
+    for (int side = 0; side < 6; ++side)
+        CHECK(dem::side_contact_omega2(b, side, s.contact) == Approx(kn * kArea / kMass).epsilon(kEigenTol));
+}
+
+TEST_CASE("dem time step: sliding and rocking couple through the shear springs' lever", "[dem][time_step]") {
+    const double k = 3e7;
+    const Scene s = cube_scene(ContactScheme::overlap, k, k);
+    const auto b = cube(s);
+    CHECK(dem::side_contact_omega2(b, 0, s.contact) == Approx(cube_omega2_equal_springs(k)).epsilon(kEigenTol));
+}
+
+TEST_CASE("dem time step: the paper scheme's corner springs stiffen rocking", "[dem][time_step]") {
+    // a grid spacing above the edge leaves the 4 corners, A/4 each: Σ x²·dA = A·edge²/4 instead
+    // of edge⁴/12, so rocking k·A·(edge²/4)/(m·edge²/6) = 1.5·k·A/m passes the vertical mode
+    const double kn = 3e7;
+    Scene s = cube_scene(ContactScheme::paper, kn, 0.0);
+    s.contact.grid_spacing = 2.0 * kEdge;
+    const auto b = cube(s);
+    CHECK(dem::hit_grid(b.side_quad(0), s.contact.grid_spacing).size() == 4);
+    CHECK(dem::side_contact_omega2(b, 0, s.contact) == Approx(1.5 * kn * kArea / kMass).epsilon(kEigenTol));
+}
+
+TEST_CASE("dem time step: the critical step is 2/omega, less for damping", "[dem][time_step]") {
+    const double k = 3e7;
+    Scene s = cube_scene(ContactScheme::overlap, k, k);
+    const double w = std::sqrt(cube_omega2_equal_springs(k));
+    std::vector<dem::Block> blocks{cube(s)};
+    CHECK(dem::contact_critical_step(blocks, s.contact) == Approx(2.0 / w).epsilon(kEigenTol));
+
+    // ζ = 0.2 of critical: 2/ω·(√(1+ζ²) − ζ)
+    s.contact.damping_rule = ContactDampingRule::ratio;
+    s.contact.damping = 0.2;
+    CHECK(dem::contact_critical_step(blocks, s.contact) ==
+          Approx(2.0 / w * (std::sqrt(1.04) - 0.2)).epsilon(kEigenTol));
+
+    // dashpot γ = 1e-4 s: ζ = γ·ω/2
+    s.contact.damping_rule = ContactDampingRule::time;
+    s.contact.damping = 1e-4;
+    const double zeta = 0.5 * 1e-4 * w;
+    CHECK(dem::contact_critical_step(blocks, s.contact) ==
+          Approx(2.0 / w * (std::sqrt(1.0 + zeta * zeta) - zeta)).epsilon(kEigenTol));
+}
+
+TEST_CASE("dem time step: a pair of free blocks sums their squared frequencies, fixed blocks count none", "[dem][time_step]") {
+    // two equal blocks on springs in series: the pair's frequency is at most √2 times one's
+    const double k = 3e7;
+    const Scene s = cube_scene(ContactScheme::overlap, k, k, true);
+    const double w = std::sqrt(cube_omega2_equal_springs(k));
+    std::vector<dem::Block> one{cube(s), dem::make_block(s.blocks[1], s)};
+    CHECK(one[1].fixed);
+    CHECK(dem::contact_critical_step(one, s.contact) == Approx(2.0 / w).epsilon(kEigenTol));
+    std::vector<dem::Block> two{cube(s), cube(s)};
+    CHECK(dem::contact_critical_step(two, s.contact) == Approx(2.0 / (std::sqrt(2.0) * w)).epsilon(kEigenTol));
+    CHECK(dem::contact_critical_step({one[1]}, s.contact) == 0.0);   // nothing free: no step
+    CHECK(dem::element_critical_step(two) == 0.0);                   // no deformable block
+}
+
+TEST_CASE("dem time step: run.dt = auto takes the safety factor times the critical step", "[dem][time_step]") {
+    const double k = 3e7;
+    Scene s = cube_scene(ContactScheme::overlap, k, k, true);
+    s.run.dt.reset();
+    s.run.dt_safety = 0.1;
+    const double crit = 2.0 / std::sqrt(cube_omega2_equal_springs(k));
+    auto backend = test::build_dem(s);
+    CHECK(backend->critical_step() == Approx(crit).epsilon(kEigenTol));
+    CHECK(backend->time_step() == Approx(0.1 * crit).epsilon(kEigenTol));
+}
