@@ -154,13 +154,13 @@ int sweep_command(const SweepOptions& o) {
 
     // the runs of this shard without a result yet (--resume), or all of them
     const auto mine = sweep::shard_of(sweep.runs, shard.first, shard.second);
-    std::vector<sweep::SweepRun> todo;
+    std::vector<sweep::SweepRun> pending;
     for (const auto& r : mine)
-        if (!fs::exists(sweep::result_path(dir.string(), r.id))) todo.push_back(r);
-    if (!o.quiet && todo.size() < mine.size())
-        std::cerr << "sweep: " << mine.size() - todo.size() << " runs already done, " << todo.size() << " to run\n";
+        if (!fs::exists(sweep::result_path(dir.string(), r.id))) pending.push_back(r);
+    if (!o.quiet && pending.size() < mine.size())
+        std::cerr << "sweep: " << mine.size() - pending.size() << " runs already done, " << pending.size() << " to run\n";
     std::vector<RunJob> jobs;
-    for (const auto& r : todo) {
+    for (const auto& r : pending) {
         RunJob j;
         const auto v = sweep::backend_variant(r.backend);
         j.scene = r.scene;
@@ -175,7 +175,7 @@ int sweep_command(const SweepOptions& o) {
     }
     std::size_t finished = 0;
     run_sweep_pool(jobs, o.jobs, [&](std::size_t i, const JobOutcome& out) {
-        const auto& run = todo[i];
+        const auto& run = pending[i];
         ++finished;
         if (out.status == JobStatus::interrupted) return;   // no result: --resume runs it again
         sweep::SweepResult r;
@@ -191,7 +191,7 @@ int sweep_command(const SweepOptions& o) {
         if (!o.quiet) {
             char buf[256];
             std::snprintf(buf, sizeof buf, "sweep [%zu/%zu] %s %s %s %.4g g: %s%s, peak %.3g rad\n", finished,
-                          todo.size(), run.id.c_str(), run.backend.c_str(), run.record.c_str(), run.intensity,
+                          pending.size(), run.id.c_str(), run.backend.c_str(), run.record.c_str(), run.intensity,
                           r.status.c_str(), r.overturned ? ", overturned" : "", r.peak_rotation);
             std::cerr << buf;
         }

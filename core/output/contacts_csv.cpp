@@ -3,7 +3,6 @@
 #include <cstdio>
 #include <stdexcept>
 
-#include "output/durable.hpp"
 
 namespace cairn {
 
@@ -32,41 +31,23 @@ std::string contact_rows(const Scene& scene, double t, const std::vector<Contact
     return out;
 }
 
-namespace {
-/// bytes buffered between writes to the file
-constexpr size_t kBufferBytes = size_t(1) << 20;
-}  // namespace
-
 ContactsCsvFile::ContactsCsvFile(std::string path, const Backend& backend)
-    : path_(std::move(path)), backend_(backend) {}
-
-void ContactsCsvFile::check() const {
-    if (!out_) throw std::runtime_error("error while writing " + path_ + " (disk full?)");
-}
+    : file_(std::move(path)), backend_(backend) {}
 
 void ContactsCsvFile::begin(const Scene& scene, const RunResult&) {
     scene_ = &scene;
-    buffer_.resize(kBufferBytes);
-    out_.rdbuf()->pubsetbuf(buffer_.data(), std::streamsize(buffer_.size()));
-    out_.open(path_, std::ios::binary | std::ios::trunc);
-    if (!out_) throw std::runtime_error("cannot write " + path_);
+    file_.open();
     std::string head;
     for (const auto& c : contact_columns()) head += (head.empty() ? "" : ",") + c;
-    out_ << head << '\n';
-    check();
+    file_.out() << head << '\n';
+    file_.check();
 }
 
 void ContactsCsvFile::sample(const Sample& s) {
-    out_ << contact_rows(*scene_, s.t, backend_.contact_points());
-    check();
+    file_.out() << contact_rows(*scene_, s.t, backend_.contact_points());
+    file_.check();
 }
 
-void ContactsCsvFile::end(const RunResult&) {
-    out_.flush();
-    check();
-    out_.close();
-    if (!out_) throw std::runtime_error("error while closing " + path_ + " (disk full?)");
-    sync_file(path_);
-}
+void ContactsCsvFile::end(const RunResult&) { file_.close(); }
 
 }  // namespace cairn

@@ -2,11 +2,11 @@
 /// Writing the contact points of a run (`cairn run --contacts`): one row per contact point per
 /// output sample, streamed to DIR/contacts.csv as the run goes.
 
-#include <fstream>
 #include <string>
 #include <vector>
 
 #include "backend/backend.hpp"
+#include "output/buffered_file.hpp"
 #include "run/sample_sink.hpp"
 
 namespace cairn {
@@ -30,12 +30,9 @@ public:
     void end(const RunResult& run) override;
 
 private:
-    std::string path_;
+    BufferedFile file_;
     const Backend& backend_;
     const Scene* scene_ = nullptr;
-    std::vector<char> buffer_;
-    std::ofstream out_;
-    void check() const;
 };
 
 }  // namespace cairn

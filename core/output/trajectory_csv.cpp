@@ -3,7 +3,6 @@
 #include <cstdio>
 #include <stdexcept>
 
-#include "output/durable.hpp"
 
 namespace cairn {
 
@@ -72,37 +71,19 @@ void write_trajectory_csv(std::ostream& out, const Scene& scene, const std::vect
     for (const auto& s : samples) w.row(s);
 }
 
-namespace {
-/// bytes buffered between writes to the file
-constexpr size_t kBufferBytes = size_t(1) << 20;
-}  // namespace
-
-TrajectoryCsvFile::TrajectoryCsvFile(std::string path) : path_(std::move(path)) {}
-
-void TrajectoryCsvFile::check() const {
-    if (!out_) throw std::runtime_error("error while writing " + path_ + " (disk full?)");
-}
+TrajectoryCsvFile::TrajectoryCsvFile(std::string path) : file_(std::move(path)) {}
 
 void TrajectoryCsvFile::begin(const Scene& scene, const RunResult&) {
-    buffer_.resize(kBufferBytes);
-    out_.rdbuf()->pubsetbuf(buffer_.data(), std::streamsize(buffer_.size()));
-    out_.open(path_, std::ios::binary | std::ios::trunc);
-    if (!out_) throw std::runtime_error("cannot write " + path_);
-    writer_ = std::make_unique<TrajectoryCsvWriter>(out_, scene);
-    check();
+    file_.open();
+    writer_ = std::make_unique<TrajectoryCsvWriter>(file_.out(), scene);
+    file_.check();
 }
 
 void TrajectoryCsvFile::sample(const Sample& s) {
     writer_->row(s);
-    check();
+    file_.check();
 }
 
-void TrajectoryCsvFile::end(const RunResult&) {
-    out_.flush();
-    check();
-    out_.close();
-    if (!out_) throw std::runtime_error("error while closing " + path_ + " (disk full?)");
-    sync_file(path_);
-}
+void TrajectoryCsvFile::end(const RunResult&) { file_.close(); }
 
 }  // namespace cairn

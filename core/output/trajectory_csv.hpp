@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "backend/backend.hpp"
+#include "output/buffered_file.hpp"
 #include "run/sample_sink.hpp"
 
 namespace cairn {
@@ -46,14 +47,11 @@ public:
     void begin(const Scene& scene, const RunResult& run) override;
     void sample(const Sample& s) override;
     void end(const RunResult& run) override;
-    const std::string& path() const { return path_; }
+    const std::string& path() const { return file_.path(); }
 
 private:
-    std::string path_;
-    std::vector<char> buffer_;
-    std::ofstream out_;
+    BufferedFile file_;
     std::unique_ptr<TrajectoryCsvWriter> writer_;
-    void check() const;
 };
 
 }  // namespace cairn
