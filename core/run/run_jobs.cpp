@@ -9,6 +9,7 @@
 #include "output/run_files.hpp"
 #include "output/trajectory_csv.hpp"
 #include "run/core_pool.hpp"
+#include "scene/scene_io.hpp"
 
 namespace fs = std::filesystem;
 
@@ -42,7 +43,26 @@ double median(std::vector<double> v) {
     return v.size() % 2 ? v[m] : 0.5 * (v[m - 1] + v[m]);
 }
 
+std::string job_key(const RunSpec& job) {
+    const RunOptions& o = job.options;
+    const std::string options = "contact_mode=" + o.contact_mode +
+                                " allow_large=" + std::to_string(o.limits.allow_large) +
+                                " allow_unstable_dt=" + std::to_string(o.limits.allow_unstable_dt) +
+                                " memory_budget=" + message_number(o.limits.memory_budget, 17) +
+                                " record_contacts=" + std::to_string(o.record_contacts);
+    const std::string scene = job.scene ? scene_to_json(*job.scene).dump() : "";
+    return text_hash(scene + '\n' + job.backend + '\n' + options);
+}
+
 namespace {
+
+/// the outcome named by to_string (failed when none is)
+Outcome outcome_named(const std::string& name) {
+    for (Outcome o : {Outcome::completed, Outcome::unstable, Outcome::interrupted, Outcome::refused,
+                      Outcome::input_error, Outcome::failed})
+        if (name == to_string(o)) return o;
+    return Outcome::failed;
+}
 
 /// the first run of a job: with files, streamed to out_dir/trajectory.csv and ended by run.json
 RunResult first_run(const RunSpec& job, const BackendInfo& info, const ProgressFn& progress, JobResult& r) {
@@ -112,8 +132,25 @@ JobResult execute(const RunSpec& job, const BackendInfo* info, const JobsOptions
 
 }  // namespace
 
-void run_jobs(const std::vector<RunSpec>& jobs, const std::vector<BackendInfo>& backends,
-              const JobsOptions& options, const std::function<void(std::size_t, JobResult&)>& done) {
+std::size_t run_jobs(const std::vector<RunSpec>& jobs, const std::vector<BackendInfo>& backends,
+                     const JobsOptions& options, const std::function<void(std::size_t, JobResult&)>& done) {
+    // resume: the jobs the log holds are handed over as kept, the others run
+    std::vector<std::string> keys(options.resume ? jobs.size() : 0);
+    std::vector<size_t> to_run;
+    for (size_t i = 0; i < jobs.size(); ++i) {
+        if (options.resume) {
+            keys[i] = job_key(jobs[i]);
+            if (const ResumeLog::Entry* kept = options.resume->find(keys[i])) {
+                JobResult r;
+                r.resumed = true;
+                r.outcome = outcome_named(kept->outcome);
+                r.record = kept->record;
+                if (done) done(i, r);
+                continue;
+            }
+        }
+        to_run.push_back(i);
+    }
     // the facts of each job's backend, looked up once (an unknown name: the job is refused)
     std::vector<const BackendInfo*> info(jobs.size(), nullptr);
     std::vector<std::string> unknown(jobs.size());
@@ -127,8 +164,9 @@ void run_jobs(const std::vector<RunSpec>& jobs, const std::vector<BackendInfo>& 
     std::mutex print;
     size_t finished = 0;
     run_on_cores(
-        jobs.size(), options.jobs,
-        [&](size_t i) {
+        to_run.size(), options.jobs,
+        [&](size_t k) {
+            const size_t i = to_run[k];
             ProgressFn progress;
             if (options.progress) progress = [&options, i](double f) { options.progress(i, f); };
             JobResult r;
@@ -143,12 +181,23 @@ void run_jobs(const std::vector<RunSpec>& jobs, const std::vector<BackendInfo>& 
                 std::lock_guard<std::mutex> lock(print);
                 ++finished;
                 if (!options.quiet)
-                    std::fprintf(stderr, "%s [%zu/%zu] %s %s: %s, %.3g s\n", options.tag.c_str(), finished, jobs.size(),
+                    std::fprintf(stderr, "%s [%zu/%zu] %s %s: %s, %.3g s\n", options.tag.c_str(), finished, to_run.size(),
                                  jobs[i].backend.c_str(), jobs[i].label.c_str(), to_string(r.outcome), r.median_wall);
             }
             if (done) done(i, r);
+            const bool final = r.outcome == Outcome::completed || r.outcome == Outcome::unstable ||
+                               r.outcome == Outcome::refused;
+            if (options.resume && final) {
+                try {
+                    options.resume->keep(keys[i], {to_string(r.outcome), r.record});
+                } catch (const std::exception& e) {
+                    std::lock_guard<std::mutex> lock(print);
+                    std::fprintf(stderr, "%s: %s (the job will run again on resume)\n", options.tag.c_str(), e.what());
+                }
+            }
         },
-        [&](size_t i) { return info[i] && !info[i]->thread_safe; });
+        [&](size_t k) { const size_t i = to_run[k]; return info[i] && !info[i]->thread_safe; });
+    return to_run.size();
 }
 
 }  // namespace cairn

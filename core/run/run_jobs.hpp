@@ -11,6 +11,7 @@
 
 #include "backend/backend_info.hpp"
 #include "output/run_record.hpp"
+#include "run/resume_log.hpp"
 #include "run/runner.hpp"
 
 namespace cairn {
@@ -50,6 +51,10 @@ struct JobResult {
     std::string message;        ///< why it did not complete
     RunResult result;           ///< of the first run (runs are deterministic)
     double median_wall = NAN;   ///< median wall time of the repeats, s
+    bool resumed = false;       ///< not run: kept by an earlier invocation (result and wall time empty)
+    /// the caller's text of the result (one line): set by `done` to be kept in the resume log,
+    /// or the kept text when resumed
+    std::string record;
 };
 
 /// Options of a job list.
@@ -62,15 +67,24 @@ struct JobsOptions {
     /// called from the workers with a job's index and fraction done (1 once ended); the callee
     /// serialises; empty = none
     std::function<void(std::size_t job, double fraction)> progress;
+    /// resume: a job whose key (job_key) is in the log is not run, and a job that ends completed,
+    /// unstable or refused is kept there with the record `done` gave it; nullptr = run every job
+    ResumeLog* resume = nullptr;
 };
+
+/// a job's identity for resuming: text_hash of its scene (every parameter, as run.json records
+/// it), backend name and options
+std::string job_key(const RunSpec& job);
 
 /// median of the values (NaN when empty)
 double median(std::vector<double> v);
 
 /// run every job on the backends of `backends` (jobs on a backend that is not thread-safe never
 /// overlap); done(i, result) is called from a worker as job i ends (callers lock shared state).
-/// Once a stop is requested no new job starts.
-void run_jobs(const std::vector<RunSpec>& jobs, const std::vector<BackendInfo>& backends,
+/// Once a stop is requested no new job starts. With a resume log, the jobs it holds are handed to
+/// done (resumed, their outcome and record as kept) first, in order, and are not run. Returns the
+/// number of jobs run.
+std::size_t run_jobs(const std::vector<RunSpec>& jobs, const std::vector<BackendInfo>& backends,
               const JobsOptions& options, const std::function<void(std::size_t, JobResult&)>& done);
 
 }  // namespace cairn

@@ -98,3 +98,48 @@ TEST_CASE("run jobs write a run's files; an unstable run keeps a partial traject
     const std::string text((std::istreambuf_iterator<char>(record)), std::istreambuf_iterator<char>());
     CHECK_THAT(text, Catch::Contains("\"unstable\""));
 }
+
+TEST_CASE("run jobs resume: a job list run twice runs nothing the second time, with the same results", "[run][jobs]") {
+    const Scene scene = flight_scene();
+    Scene longer = flight_scene();
+    longer.run.duration = 0.2;   // another scene text: another key
+    testing::Faults bad;
+    bad.unstable_at_step = 20;
+    const std::vector<BackendInfo> backends{fake_info("fake"), fake_info("shaky", bad)};
+    const fs::path dir = fs::path(CAIRN_BINARY_DIR) / "test_scratch" / "run_jobs_resume";
+    fs::remove_all(dir);
+    fs::create_directories(dir);
+    std::vector<RunSpec> jobs(3);
+    jobs[0].scene = &scene, jobs[0].backend = "fake";
+    jobs[1].scene = &longer, jobs[1].backend = "fake";
+    jobs[2].scene = &scene, jobs[2].backend = "shaky";
+    // the record a caller keeps: outcome and last x of the run
+    auto run_list = [&](std::vector<JobResult>& got) {
+        ResumeLog log((dir / "jobs.resume").string());
+        JobsOptions options;
+        options.quiet = true;
+        options.resume = &log;
+        std::mutex m;
+        return run_jobs(jobs, backends, options, [&](size_t i, JobResult& r) {
+            if (!r.resumed) r.record = message_number(r.result.samples.back().blocks[0].position.x(), 17);
+            std::lock_guard<std::mutex> lock(m);
+            got[i] = r;
+        });
+    };
+    std::vector<JobResult> first(jobs.size()), second(jobs.size());
+    CHECK(run_list(first) == 3);
+    CHECK(run_list(second) == 0);
+    for (size_t i = 0; i < jobs.size(); ++i) {
+        CHECK_FALSE(first[i].resumed);
+        CHECK(second[i].resumed);
+        CHECK(second[i].outcome == first[i].outcome);
+        CHECK(second[i].record == first[i].record);
+    }
+    CHECK(first[1].record != first[0].record);   // the longer flight went further: keys differ
+    CHECK(second[2].outcome == Outcome::unstable);
+    // another backend or contact mode is another job
+    jobs[0].options.contact_mode = "matched";
+    std::vector<JobResult> third(jobs.size());
+    CHECK(run_list(third) == 1);
+    CHECK_FALSE(third[0].resumed);
+}
