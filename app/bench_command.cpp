@@ -12,6 +12,7 @@
 #include "bench/stability.hpp"
 #include "bench/trade_sweep.hpp"
 #include "bench/wall_bench.hpp"
+#include "backend_option.hpp"
 #include "commands.hpp"
 #include "error.hpp"
 #include "output/atomic_write.hpp"
@@ -26,11 +27,12 @@ namespace cairn {
 
 namespace {
 
-std::vector<std::string> chosen_backends(const std::vector<std::string>& asked) {
+/// the backends of --backends (checked), in the registry's order
+std::vector<std::string> bench_backends(const std::vector<std::string>& given) {
+    const std::vector<std::string> asked = chosen_backends(given);
     std::vector<std::string> out;
     for (const auto& b : available_backends())
-        if (asked.empty() || std::find(asked.begin(), asked.end(), b.name) != asked.end()) out.push_back(b.name);
-    for (const auto& a : asked) make_backend(a);   // an unknown name is an error
+        if (std::find(asked.begin(), asked.end(), b.name) != asked.end()) out.push_back(b.name);
     return out;
 }
 
@@ -39,7 +41,7 @@ std::unique_ptr<Backend> make(const std::string& name) { return make_backend(nam
 // the asked backends into `out`; false (the error printed) for an unknown name
 bool backends_or_error(const BenchOptions& o, std::vector<std::string>& out) {
     try {
-        out = chosen_backends(o.backends);
+        out = bench_backends(o.backends);
         return true;
     } catch (const Error& e) {
         std::cerr << "error: " << e.what() << "\n";
@@ -57,7 +59,7 @@ int trade(const BenchOptions& o, const std::string& dir) {
     std::vector<bench::TradeConfig> configs;
     const auto size = o.quick ? bench::SweepSize::quick : o.full ? bench::SweepSize::full : bench::SweepSize::standard;
     try {
-        const auto backends = chosen_backends(o.backends);
+        const auto backends = bench_backends(o.backends);
         const auto cases = o.cases.empty() ? bench::trade_cases() : o.cases;
         for (const auto& c : cases) {
             if (std::find(bench::trade_cases().begin(), bench::trade_cases().end(), c) == bench::trade_cases().end())
@@ -81,7 +83,7 @@ int stability(const BenchOptions& o, const std::string& dir) {
     const auto t0 = std::chrono::steady_clock::now();
     std::vector<bench::StabilityConfig> configs;
     try {
-        for (const auto& b : chosen_backends(o.backends))
+        for (const auto& b : bench_backends(o.backends))
             for (auto& c : bench::stability_configs(b, scenarios_dir(), available_backends(), o.long_steps)) configs.push_back(std::move(c));
     } catch (const Error& e) {
         std::cerr << "error: " << e.what() << "\n";

@@ -8,6 +8,7 @@
 #include <iostream>
 
 
+#include "backend_option.hpp"
 #include "commands.hpp"
 #include "error.hpp"
 #include "output/atomic_write.hpp"
@@ -44,17 +45,6 @@ std::string command_line(const CompareOptions& o, const std::string& out_dir) {
     if (!o.baseline.empty()) c += " --baseline " + o.baseline;
     for (const auto& s : o.overrides) c += " --set " + s;
     return c;
-}
-
-/// the backends named by --backends ("all" or empty = every available one), each checked
-std::vector<std::string> chosen_backends(const std::vector<std::string>& given) {
-    std::vector<std::string> names;
-    for (const auto& b : available_backends()) names.push_back(b.name);
-    if (given.empty() || (given.size() == 1 && given[0] == "all")) return names;
-    for (const auto& b : given)
-        if (std::find(names.begin(), names.end(), b) == names.end())
-            throw Error("--backends " + b + ": no such backend" + did_you_mean(b, names) + "; available: " + join(names));
-    return given;
 }
 
 }  // namespace

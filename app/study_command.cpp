@@ -9,9 +9,8 @@
 #include <iostream>
 #include <memory>
 
+#include "backend_option.hpp"
 #include "commands.hpp"
-#include "dem/deformable/deformable_body.hpp"
-#include "dem/mesh.hpp"
 #include "error.hpp"
 #include "output/staged_dir.hpp"
 #include "registry.hpp"
@@ -30,18 +29,6 @@ namespace {
 
 /// true for a backend whose runs must not overlap (its registry facts)
 bool not_thread_safe(const std::string& name) { return !find_backend(available_backends(), name).thread_safe; }
-
-
-/// the dem engine's own assembled rotational inertia of block b (about its centre, block axes)
-Mat3 dem_inertia(const Scene& scene, int b) {
-    const BlockDef& d = scene.blocks.at(size_t(b));
-    const dem::Mesh mesh = dem::make_mesh(d.corners, d.mesh.divisions);
-    const std::vector<char> fixed(mesh.nodes.size(), 0);
-    // on the heap, as the engine builds it (aligned members)
-    const auto body = std::make_shared<dem::DeformableBody>(mesh, scene.materials.at(size_t(d.material)),
-                                                            d.mesh.mass, 0.0, fixed);
-    return body->inertia();
-}
 
 }  // namespace
 
@@ -62,7 +49,8 @@ int study_inertia_command(const StudyInertiaOptions& o) {
     options.quiet = o.quiet;
     const auto start = std::chrono::steady_clock::now();
     const auto points = study::run_study(study::default_cases(scenarios_dir()), options,
-                                         available_backends(), dem_inertia);
+                                         available_backends(),
+                                         find_backend(available_backends(), "dem").block_inertia);
     const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     if (stop_requested()) {
         return interrupted_keeping("study", o.out_dir);
@@ -107,17 +95,6 @@ CLI::App* add_study_overturning(CLI::App& study, StudyOverturningOptions& o) {
 }
 
 namespace {
-
-/// the backends of --backends (empty or "all" = every available one), each checked
-std::vector<std::string> chosen(const std::vector<std::string>& given) {
-    std::vector<std::string> names;
-    for (const auto& a : available_backends()) names.push_back(a.name);
-    if (given.empty() || (given.size() == 1 && given[0] == "all")) return names;
-    for (const auto& n : given)
-        if (std::find(names.begin(), names.end(), n) == names.end())
-            throw Error("--backends " + n + ": no such backend" + did_you_mean(n, names));
-    return given;
-}
 
 /// the scene file's text
 std::string read_text(const std::string& path) {
@@ -185,7 +162,7 @@ study::OverturningSetup overturning_setup(const StudyOverturningOptions& o) {
     take(o.levels, s.levels, "--levels");
     take(o.ratios, s.ratios, "--ratios");
     if (s.levels.size() < 2) throw Error("--levels: at least 2 amplitudes");
-    s.backends = chosen(o.backends);
+    s.backends = chosen_backends(o.backends);
     s.bisect = o.bisect;
     s.jobs = o.jobs;
     s.quiet = o.quiet;
@@ -248,7 +225,7 @@ int study_record_command(const StudyRecordOptions& o) {
             setup.scene_text = read_text(setup.scene_source);
         }
         for (const auto& ov : o.overrides) setup.overrides.push_back(parse_override(ov));
-        setup.backends = chosen(o.backends);
+        setup.backends = chosen_backends(o.backends);
         setup.jobs = o.jobs;
         setup.quiet = o.quiet;
         staged = std::make_unique<StagedDir>(o.out_dir, true);

@@ -5,6 +5,8 @@
 #include <stdexcept>
 #include <string>
 
+#include "output/number_format.hpp"   // message_number, the numbers of messages
+
 namespace cairn {
 
 /// Bad input or an unsupported request; what() is the full message shown to the user.
@@ -12,12 +14,5 @@ class Error : public std::runtime_error {
 public:
     using std::runtime_error::runtime_error;
 };
-
-/// a number for a message, printf "%.<digits>g" (1e+30, 0.0111)
-inline std::string message_number(double x, int digits = 4) {
-    char buf[40];
-    std::snprintf(buf, sizeof buf, "%.*g", digits, x);
-    return buf;
-}
 
 }  // namespace cairn

@@ -10,6 +10,7 @@
 #include "engine_settings.hpp"
 #include "error.hpp"
 #include "rigid_blocks.hpp"
+#include "rigid_sample.hpp"
 
 namespace cairn {
 
@@ -95,6 +96,10 @@ public:
 
 private:
     void clear();
+    /// centre of mass of block i, world, m
+    Vec3 com(int i) const { return eig(bodies_[i]->getCenterOfMassPosition()); }
+    /// rotation block frame → world of block i (Bullet's body frame is the principal axes)
+    Quat orientation(int i) const { return eig(bodies_[i]->getOrientation()) * Quat(blocks_[i].principal.transpose()); }
     Scene scene_;
     std::vector<RigidBlock> blocks_;
     std::unique_ptr<btDefaultCollisionConfiguration> config_;
@@ -271,36 +276,23 @@ StepStatus BulletBackend::step() {
     double p1 = power();
     t_ += dt_;
     external_work_ += 0.5 * (p0 + p1) * dt_;
-    for (const auto& body : bodies_) {
-        Vec3 x = eig(body->getCenterOfMassPosition());
-        if (!x.allFinite()) {
-            failure_ = "block '" + scene_.blocks[body->getUserIndex()].name + "' position is not finite at t = " +
-                       std::to_string(t_) + " s";
-            return StepStatus::unstable;
-        }
-    }
-    return StepStatus::ok;
+    failure_ = non_finite_block(blocks_, t_, [&](int i) { return com(i); });
+    return failure_.empty() ? StepStatus::ok : StepStatus::unstable;
 }
 
 Sample BulletBackend::sample() const {
-    Sample s;
-    s.t = t_;
-    for (const RigidBlock& b : blocks_) {
-        if (b.fixed) continue;
-        const btRigidBody* body = bodies_[b.index].get();
-        BlockState st;
-        st.position = eig(body->getCenterOfMassPosition());
-        st.orientation = (eig(body->getOrientation()) * Quat(b.principal.transpose())).normalized();
-        st.velocity = eig(body->getLinearVelocity());
-        st.angular_velocity = eig(body->getAngularVelocity());
-        add_block_state(s, b, st, scene_.gravity);
-    }
-    for (const ProbeDef& p : scene_.probes) {
-        const RigidBlock& b = blocks_[p.block];
-        const btRigidBody* body = bodies_[p.block].get();
-        Quat q = eig(body->getOrientation()) * Quat(b.principal.transpose());
-        s.probes.push_back(block_point_world(b, eig(body->getCenterOfMassPosition()), q, p.point));
-    }
+    Sample s = rigid_sample(
+        t_, blocks_, scene_,
+        [&](const RigidBlock& b) {
+            const btRigidBody* body = bodies_[b.index].get();
+            BlockState st;
+            st.position = com(b.index);
+            st.orientation = orientation(b.index).normalized();
+            st.velocity = eig(body->getLinearVelocity());
+            st.angular_velocity = eig(body->getAngularVelocity());
+            return st;
+        },
+        [&](int i) { return com(i); }, [&](int i) { return orientation(i); });
     s.energy.external = external_work_;
     for_each_touching_point(*world_, [&](const btPersistentManifold&, const btManifoldPoint& p) {
         ++s.contacts;

@@ -7,6 +7,8 @@
 #include "error.hpp"
 #include "time_step.hpp"
 #include "geometry/hexahedron.hpp"
+#include "deformable/deformable_body.hpp"
+#include "mesh.hpp"
 #include "world.hpp"
 
 namespace cairn {
@@ -144,6 +146,21 @@ private:
 
 }  // namespace
 
+namespace {
+
+/// the rotational inertia of block b's mesh as a deformable body assembles it (its mass scheme)
+Mat3 assembled_inertia(const Scene& scene, int b) {
+    const BlockDef& d = scene.blocks.at(size_t(b));
+    const dem::Mesh mesh = dem::make_mesh(d.corners, d.mesh.divisions);
+    const std::vector<char> fixed(mesh.nodes.size(), 0);
+    // on the heap, as the engine builds it (aligned members)
+    const auto body = std::make_shared<dem::DeformableBody>(mesh, scene.materials.at(size_t(d.material)),
+                                                            d.mesh.mass, 0.0, fixed);
+    return body->inertia();
+}
+
+}  // namespace
+
 BackendInfo dem_backend_info() {
     BackendInfo info;
     info.name = "dem";
@@ -161,6 +178,7 @@ BackendInfo dem_backend_info() {
     info.contact = ContactModel::penalty;
     info.solver = "penalty springs per hitting point (corners and a virtual grid), elastic-Coulomb shear";
     info.make = [] { return std::make_unique<DemBackend>(); };
+    info.block_inertia = assembled_inertia;
     return info;
 }
 

@@ -16,6 +16,7 @@
 #include "error.hpp"
 #include "hexahedron_contact.hpp"
 #include "rigid_blocks.hpp"
+#include "rigid_sample.hpp"
 
 namespace cairn {
 
@@ -437,32 +438,25 @@ StepStatus OdeBackend::step() {
         }
     }
     external_work_ += 0.5 * (p0 + load_power()) * dt_;
-    for (size_t i = 0; i < bodies_.size(); ++i)
-        if (bodies_[i] && !com(static_cast<int>(i)).allFinite()) {
-            failure_ = "block '" + blocks_[i].name + "' position is not finite at t = " + std::to_string(t_) + " s";
-            return StepStatus::unstable;
-        }
-    return StepStatus::ok;
+    failure_ = non_finite_block(blocks_, t_, [&](int i) { return com(i); });
+    return failure_.empty() ? StepStatus::ok : StepStatus::unstable;
 }
 
 Sample OdeBackend::sample() const {
     if (faulted_) return frozen_;
-    Sample s;
-    s.t = t_;
-    for (const RigidBlock& b : blocks_) {
-        if (b.fixed) continue;
-        dBodyID body = bodies_[b.index];
-        BlockState st;
-        st.position = com(b.index);
-        st.orientation = orientation(b.index).normalized();
-        const dReal* v = dBodyGetLinearVel(body);
-        const dReal* w = dBodyGetAngularVel(body);
-        st.velocity = Vec3(v[0], v[1], v[2]);
-        st.angular_velocity = Vec3(w[0], w[1], w[2]);
-        add_block_state(s, b, st, scene_.gravity);
-    }
-    for (const ProbeDef& p : scene_.probes)
-        s.probes.push_back(block_point_world(blocks_[p.block], com(p.block), orientation(p.block), p.point));
+    Sample s = rigid_sample(
+        t_, blocks_, scene_,
+        [&](const RigidBlock& b) {
+            BlockState st;
+            st.position = com(b.index);
+            st.orientation = orientation(b.index).normalized();
+            const dReal* v = dBodyGetLinearVel(bodies_[b.index]);
+            const dReal* w = dBodyGetAngularVel(bodies_[b.index]);
+            st.velocity = Vec3(v[0], v[1], v[2]);
+            st.angular_velocity = Vec3(w[0], w[1], w[2]);
+            return st;
+        },
+        [&](int i) { return com(i); }, [&](int i) { return orientation(i); });
     s.energy.external = external_work_;
     s.energy.contact = contact_energy_;
     s.contacts = contact_count_;

@@ -18,7 +18,6 @@ namespace cairn::bench {
 
 namespace {
 
-std::string fmt(const char* f, double v) { return number_format(f, v); }
 
 std::string slurp(const fs::path& p) { return read_whole(p.string()); }
 
@@ -29,7 +28,7 @@ std::vector<std::string> variants_of(const std::vector<TradePoint>& pts, const s
     return v;
 }
 
-std::string pct_text(double e) { return fmt(e < 1e-3 ? "%.2g %%" : "%.3g %%", 100.0 * e); }
+std::string pct_text(double e) { return number_format(e < 1e-3 ? "%.2g %%" : "%.3g %%", 100.0 * e); }
 
 }  // namespace
 
@@ -44,7 +43,7 @@ report::Table cheapest_table(const std::vector<TradePoint>& pts, const std::stri
         std::vector<std::string> row{v};
         for (double target : error_targets()) {
             const auto i = cheapest_reaching(pts, c, v, target);
-            row.push_back(i ? pts[*i].knobs + " (" + fmt("%.3g s", pts[*i].wall_seconds) + ", " +
+            row.push_back(i ? pts[*i].knobs + " (" + number_format("%.3g s", pts[*i].wall_seconds) + ", " +
                                   pct_text(pts[*i].error) + ")"
                             : "cannot");
         }
@@ -102,8 +101,8 @@ report::Document bench_document(const std::string& dir) {
                          "top moved", "status"}, {}};
         for (const auto& r : rows)
             t.rows.push_back({r.setup, r.backend, r.contact, std::to_string(r.blocks), std::to_string(r.steps),
-                              fmt("%.1f", r.steps_per_second), r.ratio_to_bullet > 0 ? fmt("%.2f", r.ratio_to_bullet) : "-",
-                              fmt("%.3g m", r.top_settlement), r.status.substr(0, 120)});
+                              number_format("%.1f", r.steps_per_second), r.ratio_to_bullet > 0 ? number_format("%.2f", r.ratio_to_bullet) : "-",
+                              number_format("%.3g m", r.top_settlement), r.status.substr(0, 120)});
         d.table(t);
     }
     add_scale_section(d, dir, note);
@@ -140,7 +139,7 @@ report::Document bench_document(const std::string& dir) {
             for (const auto& c : cases) {
                 const auto i = cheapest_reaching(pts, c, v, 0.01);
                 const auto b = most_accurate(pts, c, v);
-                if (i) row.push_back(fmt("%.3g s/s", pts[*i].wall_seconds / pts[*i].sim_seconds));
+                if (i) row.push_back(number_format("%.3g s/s", pts[*i].wall_seconds / pts[*i].sim_seconds));
                 else if (b) row.push_back("cannot (best " + pct_text(pts[*b].error) + ")");
                 else row.push_back("-");
             }
@@ -167,7 +166,7 @@ report::Document bench_document(const std::string& dir) {
             } else {
                 const double mine = pts[*dem].wall_seconds / pts[*dem].sim_seconds;
                 verdicts.push_back(c + ": dem-rigid " + (mine <= best ? "leads " : "trails ") + best_name + " by " +
-                                   fmt("%.2g", mine <= best ? best / mine : mine / best) + "x (" + pts[*dem].knobs + ").");
+                                   number_format("%.2g", mine <= best ? best / mine : mine / best) + "x (" + pts[*dem].knobs + ").");
             }
         }
         d.bullets(verdicts);
@@ -194,12 +193,6 @@ report::Document bench_document(const std::string& dir) {
     }
     if (!note.empty()) d.paragraph("Figures: " + note);
     return d;
-}
-
-std::string number_format(const char* format, double v) {
-    char b[64];
-    std::snprintf(b, sizeof b, format, v);
-    return b;
 }
 
 std::string read_whole(const std::string& path) {

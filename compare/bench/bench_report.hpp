@@ -8,6 +8,7 @@
 
 #include "bench/stability.hpp"
 #include "bench/trade_point.hpp"
+#include "output/number_format.hpp"   // number_format, for the bench reports
 #include "report/document.hpp"
 
 namespace cairn::bench {
@@ -34,8 +35,6 @@ report::Table stability_limits_table(const std::vector<StabilityPoint>& points);
 /// referenced relative to DIR
 report::Document bench_document(const std::string& dir);
 
-/// printf-style text of one number (e.g. "%.3g s")
-std::string number_format(const char* format, double v);
 /// the whole text of a file ("" when it cannot be read)
 std::string read_whole(const std::string& path);
 

@@ -8,6 +8,7 @@
 #include "cases/case_analysis.hpp"
 #include "cases/case_util.hpp"
 #include "error.hpp"
+#include "output/number_format.hpp"
 #include "metrics/signal.hpp"
 #include "scene/scene_io.hpp"
 
@@ -17,11 +18,7 @@ namespace {
 
 constexpr double kPi = 3.14159265358979323846;
 
-std::string g(double v) {
-    char b[32];
-    std::snprintf(b, sizeof b, "%g", v);
-    return b;
-}
+std::string g(double v) { return number_format("%g", v); }
 
 Scene load(const std::string& path, const std::vector<std::string>& sets) {
     std::vector<Override> o;

@@ -7,12 +7,12 @@
 #include <fstream>
 #include <iostream>
 #include <mutex>
-#include <set>
 
 #include "analytic/oracles.hpp"
 #include "cases/case_analysis.hpp"
 #include "cases/case_util.hpp"
 #include "error.hpp"
+#include "output/number_format.hpp"
 #include "run/run_jobs.hpp"
 #include "scene/scene_io.hpp"
 
@@ -21,11 +21,7 @@ namespace cairn::bench {
 namespace {
 
 /// a knob value as it appears in keys and overrides: %g
-std::string g(double v) {
-    char b[32];
-    std::snprintf(b, sizeof b, "%g", v);
-    return b;
-}
+std::string g(double v) { return number_format("%g", v); }
 
 /// the grids of one sweep size
 struct Grids {
@@ -168,79 +164,72 @@ double trade_error(const Scene& scene, const std::vector<Sample>& samples, bool 
 
 std::vector<TradePoint> run_trade(const std::vector<TradeConfig>& configs, const std::string& csv_path,
                                   const TradeOptions& options, const std::vector<BackendInfo>& backends) {
-    namespace fs = std::filesystem;
-    // resume: keep what the file has, run the rest
-    std::vector<TradePoint> done = read_trade_csv(csv_path);
-    std::set<std::string> have;
-    for (const auto& p : done) have.insert(p.key());
-    std::vector<const TradeConfig*> pending;
-    for (const auto& c : configs)
-        if (!have.count(c.point.key())) pending.push_back(&c);
-    std::error_code ec;
-    const bool fresh = !fs::exists(csv_path, ec) || fs::file_size(csv_path, ec) == 0;
-    if (!fresh) {
-        std::ifstream in(csv_path);
-        std::string first;
-        std::getline(in, first);
-        if (first != trade_csv_header())
-            throw Error(csv_path + ": not a trade.csv of this version (header differs); move it away to start afresh");
-    }
-    std::ofstream out(csv_path, std::ios::app);
+    // resume through the run layer: the points of earlier invocations are kept, as trade.csv rows,
+    // in trade.resume beside trade.csv; trade.csv is written again, kept points first
+    ResumeLog kept(trade_resume_path(csv_path));
+    std::ofstream out(csv_path, std::ios::trunc);
     if (!out) throw Error(csv_path + ": cannot write");
-    if (fresh) out << trade_csv_header() << "\n";
-    else {
-        // a row cut by an interruption has no newline: end it so the next row starts clean
-        std::ifstream in(csv_path, std::ios::binary);
-        in.seekg(-1, std::ios::end);
-        char last = '\n';
-        if (in.get(last) && last != '\n') out << "\n";
-    }
+    out << trade_csv_header() << "\n";
     out.flush();
-    if (!options.quiet && !done.empty())
-        std::cerr << "trade: " << done.size() << " points already in " << csv_path << ", " << pending.size()
-                  << " to run\n";
 
     JobsOptions po;
     po.jobs = options.jobs;
     po.quiet = options.quiet;
     po.tag = "trade";
+    po.resume = &kept;
     std::vector<RunSpec> jobs;
-    for (const auto* c : pending) {
+    for (const auto& c : configs) {
         RunSpec s;
-        s.scene = &c->scene;
-        s.backend = c->point.backend;
-        s.options.contact_mode = c->contact_mode;
+        s.scene = &c.scene;
+        s.backend = c.point.backend;
+        s.options.contact_mode = c.contact_mode;
         s.options.limits.allow_unstable_dt = true;   // the benches map stability beyond the critical step
         s.repeats = options.repeats;
-        s.label = c->point.variant + " " + c->point.case_name + " " + c->point.knobs;
+        s.label = c.point.variant + " " + c.point.case_name + " " + c.point.knobs;
         jobs.push_back(std::move(s));
     }
+    std::vector<TradePoint> done;
+    size_t resumed = 0;
     std::mutex lock;
     run_jobs(jobs, backends, po, [&](size_t j, JobResult& r) {
-        TradePoint p = pending[j]->point;
-        p.status = to_string(r.outcome);
-        p.wall_seconds = r.median_wall;
-        p.dt = r.result.dt;
-        p.steps = r.result.steps;
-        p.sim_seconds = r.result.steps * r.result.dt;
-        p.error = NAN;
-        if (r.outcome == Outcome::completed) {
-            try {
-                const bool penalty = p.backend == "dem" || pending[j]->contact_mode == "matched";
-                p.error = trade_error(pending[j]->scene, r.result.samples, penalty, p.error_metric);
-                if (!std::isfinite(p.error)) p.status = "no event";
-            } catch (const std::exception& e) {
-                p.status = std::string("analysis failed: ") + e.what();
-            }
+        TradePoint p = configs[j].point;
+        if (r.resumed) {
+            const auto back = parse_trade_csv(trade_csv_header() + "\n" + r.record);
+            if (back.size() == 1) p = back[0];
+            ++resumed;
         } else {
-            p.error_metric = r.message;
+            p.status = to_string(r.outcome);
+            p.wall_seconds = r.median_wall;
+            p.dt = r.result.dt;
+            p.steps = r.result.steps;
+            p.sim_seconds = r.result.steps * r.result.dt;
+            p.error = NAN;
+            if (r.outcome == Outcome::completed) {
+                try {
+                    const bool penalty = p.backend == "dem" || configs[j].contact_mode == "matched";
+                    p.error = trade_error(configs[j].scene, r.result.samples, penalty, p.error_metric);
+                    if (!std::isfinite(p.error)) p.status = "no event";
+                } catch (const std::exception& e) {
+                    p.status = std::string("analysis failed: ") + e.what();
+                }
+            } else {
+                p.error_metric = r.message;
+            }
+            r.record = trade_csv_row(p);
         }
         std::lock_guard<std::mutex> guard(lock);
         out << trade_csv_row(p) << "\n";
         out.flush();
         done.push_back(p);
     });
+    if (!options.quiet && resumed)
+        std::cerr << "trade: " << resumed << " points kept from " << kept.path() << ", " << configs.size() - resumed
+                  << " run\n";
     return done;
+}
+
+std::string trade_resume_path(const std::string& csv_path) {
+    return (std::filesystem::path(csv_path).parent_path() / "trade.resume").string();
 }
 
 }  // namespace cairn::bench

@@ -47,9 +47,13 @@ struct TradeOptions {
     bool quiet = false;   ///< no progress lines
 };
 
-/// run every configuration whose key is not yet in `csv_path`, appending each finished point to
-/// it; returns every point of the file afterwards (earlier ones included). Runs of a backend that is
-/// not thread-safe never overlap.
+/// the run layer's resume log of the trade sweep writing `csv_path`: trade.resume beside it
+std::string trade_resume_path(const std::string& csv_path);
+
+/// run every configuration (through the run layer, resuming: a point kept in trade_resume_path()
+/// by an earlier invocation is not run again) and write `csv_path` afresh, kept points first, each
+/// finished point as it ends; returns every point. Runs of a backend that is not thread-safe never
+/// overlap.
 std::vector<TradePoint> run_trade(const std::vector<TradeConfig>& configs, const std::string& csv_path,
                                   const TradeOptions& options, const std::vector<BackendInfo>& backends);
 

@@ -59,10 +59,14 @@ CaseAnalysis analyse_arch(const Scene& scene, const std::vector<Sample>& s, Cont
 }
 
 // kind "arch": no reference curve
-const CaseKind& arch_kind() {
+static const CaseKind& arch_kind() {
     static const FunctionKind k("arch", {"stands", "thickness"}, analyse_arch, nullptr, rigid_contact_only,
                                 "crown fell by the thickness");
     return k;
 }
+
+namespace {
+const KindRegistration arch_registered(arch_kind);
+}  // namespace
 
 }  // namespace cairn::cases

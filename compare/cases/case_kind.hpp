@@ -1,8 +1,8 @@
 #pragma once
 /// A reference kind as a strategy: everything the compare layer knows about one kind a scene's
-/// [reference] may name. The table of kinds is case_kinds(); a new kind is its own file in
-/// compare/cases/ plus one line in case_kinds.cpp (and its name and parameters in the loader's
-/// core/scene/reference_kinds.cpp, which a test checks against this table).
+/// [reference] may name. The table of kinds is case_kinds(), which every kind joins from its own
+/// file (a KindRegistration there): a new kind is its file in compare/cases/ plus its name and
+/// parameters in the loader's core/scene/reference_kinds.cpp, which a test checks against the table.
 
 #include <string>
 #include <vector>
@@ -59,7 +59,14 @@ std::vector<std::string> rigid_contact_only(const Scene& scene);
 /// contact modes of a kind whose reference is the penalty spring kn·A
 std::vector<std::string> matched_contact_only(const Scene& scene);
 
-/// every kind, in documentation order
+/// Puts a kind in case_kinds() at start-up: `const KindRegistration r(my_kind);` in the kind's file
+/// (compare/CMakeLists.txt links the files of compare/cases into every program, so none is dropped).
+struct KindRegistration {
+    /// `kind` returns the kind (a function-local static, built on first use)
+    explicit KindRegistration(const CaseKind& (*kind)());
+};
+
+/// every registered kind, in the order of the loader's reference_kinds() (documentation order)
 const std::vector<const CaseKind*>& case_kinds();
 
 /// the kind named `name`; throws cairn::Error naming `source` (the scene file) when there is none

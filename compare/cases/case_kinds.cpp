@@ -1,24 +1,38 @@
-// the table of reference kinds: one line per kind (each defined in its own file)
+// the table of reference kinds: each kind registers itself from its own file
+#include <algorithm>
+
 #include "cases/case_kind.hpp"
 #include "error.hpp"
+#include "scene/reference_kinds.hpp"
 
 namespace cairn::cases {
 
-const CaseKind& rest_kind();
-const CaseKind& impact_kind();
-const CaseKind& slide_kind();
-const CaseKind& stick_kind();
-const CaseKind& incline_kind();
-const CaseKind& rolling_kind();
-const CaseKind& housner_kind();
-const CaseKind& pushover_kind();
-const CaseKind& arch_kind();
+namespace {
+
+/// the kinds registered so far (a function-local static: ready before any registration runs)
+std::vector<const CaseKind& (*)()>& registered() {
+    static std::vector<const CaseKind& (*)()> kinds;
+    return kinds;
+}
+
+/// a kind's place: its index in the loader's list, then unknown names after them by name
+std::pair<size_t, std::string> rank(const CaseKind* k) {
+    const auto& names = reference_kinds();
+    const auto it = std::find_if(names.begin(), names.end(), [&](const ReferenceKind& r) { return r.name == k->name(); });
+    return {size_t(it - names.begin()), k->name()};
+}
+
+}  // namespace
+
+KindRegistration::KindRegistration(const CaseKind& (*kind)()) { registered().push_back(kind); }
 
 const std::vector<const CaseKind*>& case_kinds() {
-    static const std::vector<const CaseKind*> kinds = {
-        &rest_kind(), &impact_kind(), &slide_kind(), &stick_kind(), &incline_kind(),
-        &rolling_kind(), &housner_kind(), &pushover_kind(), &arch_kind(),
-    };
+    static const std::vector<const CaseKind*> kinds = [] {
+        std::vector<const CaseKind*> k;
+        for (auto* f : registered()) k.push_back(&f());
+        std::sort(k.begin(), k.end(), [](const CaseKind* a, const CaseKind* b) { return rank(a) < rank(b); });
+        return k;
+    }();
     return kinds;
 }
 

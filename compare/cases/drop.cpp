@@ -103,14 +103,19 @@ CaseAnalysis analyse_drop(const Scene& scene, const std::vector<Sample>& s, Cont
 }  // namespace
 
 // kinds "rest" (a) and "impact" (b): the reference is the penalty spring kn·A
-const CaseKind& rest_kind() {
+static const CaseKind& rest_kind() {
     static const FunctionKind k("rest", {}, analyse_drop, drop_curve, matched_contact_only, "first peak penetration");
     return k;
 }
 
-const CaseKind& impact_kind() {
+static const CaseKind& impact_kind() {
     static const FunctionKind k("impact", {"gap"}, analyse_drop, drop_curve, matched_contact_only, "first contact");
     return k;
 }
+
+namespace {
+const KindRegistration rest_registered(rest_kind);
+const KindRegistration impact_registered(impact_kind);
+}  // namespace
 
 }  // namespace cairn::cases

@@ -125,16 +125,21 @@ CaseAnalysis analyse_friction(const Scene& scene, const std::vector<Sample>& s, 
 
 // kinds "slide" and "stick" (c): Coulomb's law holds for rigid contact; the engines' matched
 // springs have no elastic stick
-const CaseKind& slide_kind() {
+static const CaseKind& slide_kind() {
     static const FunctionKind k("slide", {"force"}, analyse_friction, friction_curve, rigid_contact_only,
                                 "slid half the reference distance");
     return k;
 }
 
-const CaseKind& stick_kind() {
+static const CaseKind& stick_kind() {
     static const FunctionKind k("stick", {"force"}, analyse_friction, friction_curve, rigid_contact_only,
                                 "none (the block holds)");
     return k;
 }
+
+namespace {
+const KindRegistration slide_registered(slide_kind);
+const KindRegistration stick_registered(stick_kind);
+}  // namespace
 
 }  // namespace cairn::cases

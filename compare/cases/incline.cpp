@@ -86,10 +86,14 @@ CaseAnalysis analyse_incline(const Scene& scene, const std::vector<Sample>& s, C
 }  // namespace
 
 // kind "incline": Coulomb's law holds for rigid contact
-const CaseKind& incline_kind() {
+static const CaseKind& incline_kind() {
     static const FunctionKind k("incline", {"angle"}, analyse_incline, incline_curve, rigid_contact_only,
                                 "slid half the reference distance");
     return k;
 }
+
+namespace {
+const KindRegistration incline_registered(incline_kind);
+}  // namespace
 
 }  // namespace cairn::cases

@@ -7,6 +7,7 @@
 #include "cases/case_kind.hpp"
 #include "cases/case_util.hpp"
 #include "cases/structure_kinds.hpp"
+#include "output/number_format.hpp"
 #include "error.hpp"
 
 namespace cairn::cases {
@@ -26,11 +27,7 @@ metrics::Series rotation_series(const std::vector<Sample>& s, int f) {
     return r;
 }
 
-std::string fixed3(double x) {
-    char b[32];
-    std::snprintf(b, sizeof b, "%.4f", x);
-    return b;
-}
+std::string fixed4(double x) { return fixed_text(x, 4); }
 
 }  // namespace
 
@@ -87,9 +84,9 @@ CaseAnalysis analyse_pushover(const Scene& scene, const std::vector<Sample>& s, 
     CaseAnalysis r;
     r.measured = rotation_series(s, free_index(scene, scene.reference->block));
     r.quantity = "rotation of " + scene.blocks[scene.reference->block].name + ", rad";
-    const std::string name = "a/g when the top turns " + fixed3(threshold) + " rad";
+    const std::string name = "a/g when the top turns " + fixed4(threshold) + " rad";
     const std::string basis = "rigid monolith about its base edge under the scene's ramp (RK4): B/H = " +
-                              fixed3(quasi_static) + " plus the ramp's lag " + fixed3(lambda_ref - quasi_static) +
+                              fixed4(quasi_static) + " plus the ramp's lag " + fixed4(lambda_ref - quasi_static) +
                               "; 2 %";
     auto up = crossings(r.measured, threshold, Crossing::up);
     if (up.empty()) {
@@ -110,10 +107,14 @@ CaseAnalysis analyse_pushover(const Scene& scene, const std::vector<Sample>& s, 
 }
 
 // kind "pushover": no reference curve
-const CaseKind& pushover_kind() {
+static const CaseKind& pushover_kind() {
     static const FunctionKind k("pushover", {"threshold"}, analyse_pushover, nullptr, rigid_contact_only,
                                 "rotation passes the threshold");
     return k;
 }
+
+namespace {
+const KindRegistration pushover_registered(pushover_kind);
+}  // namespace
 
 }  // namespace cairn::cases

@@ -217,10 +217,14 @@ std::vector<std::string> rocking_modes(const Scene& scene) {
 }  // namespace
 
 // kind "housner" (e)
-const CaseKind& housner_kind() {
+static const CaseKind& housner_kind() {
     static const FunctionKind k("housner", {"theta0", "axis_x", "axis_y", "axis_z", "impacts"}, analyse_rocking,
                                 rocking_curve, rocking_modes, "first impact");
     return k;
 }
+
+namespace {
+const KindRegistration housner_registered(housner_kind);
+}  // namespace
 
 }  // namespace cairn::cases

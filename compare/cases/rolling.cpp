@@ -100,9 +100,13 @@ CaseAnalysis analyse_rolling(const Scene& scene, const std::vector<Sample>& s, C
 }  // namespace
 
 // kind "rolling" (d): coarse oracles, no reference curve
-const CaseKind& rolling_kind() {
+static const CaseKind& rolling_kind() {
     static const FunctionKind k("rolling", {"slope"}, analyse_rolling, nullptr, rigid_contact_only, "first face crossed");
     return k;
 }
+
+namespace {
+const KindRegistration rolling_registered(rolling_kind);
+}  // namespace
 
 }  // namespace cairn::cases

@@ -18,11 +18,7 @@ extern const char* const kReplayBundleJs;
 namespace {
 
 /// a number short enough for a page, close enough for a picture (6 significant digits)
-double short_number(double x) {
-    char buf[32];
-    std::snprintf(buf, sizeof buf, "%.6g", x);
-    return std::strtod(buf, nullptr);
-}
+double short_number(double x) { return std::strtod(message_number(x, 6).c_str(), nullptr); }
 
 nlohmann::json run_json(const ReplayRun& r) {
     nlohmann::json blocks = nlohmann::json::array();

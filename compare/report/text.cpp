@@ -5,25 +5,6 @@
 
 namespace cairn::report {
 
-std::string number_text(double v, int digits) {
-    if (!std::isfinite(v)) return "";
-    char b[48];
-    std::snprintf(b, sizeof b, "%.*g", digits, v);
-    return b;
-}
-
-std::string percent_text(double relative) {
-    char b[48];
-    std::snprintf(b, sizeof b, "%+.3f %%", 100.0 * relative);
-    return b;
-}
-
-std::string fixed_text(double v, int decimals) {
-    char b[48];
-    std::snprintf(b, sizeof b, "%.*f", decimals, v);
-    return b;
-}
-
 std::string csv_field(const std::string& s) {
     if (s.find_first_of(",\"\n") == std::string::npos) return s;
     std::string q = "\"";

@@ -1,17 +1,17 @@
 #pragma once
-/// Numbers as text and CSV fields, shared by every writer and reader of the compare layer.
+/// CSV fields and HTML text, shared by every writer and reader of the compare layer; numbers as
+/// text are core's (output/number_format.hpp), named here as well.
 
 #include <string>
 #include <vector>
 
+#include "output/number_format.hpp"
+
 namespace cairn::report {
 
-/// v with `digits` significant digits (printf %g); "" for NaN or infinity
-std::string number_text(double v, int digits = 6);
-/// a relative value as a signed percentage with 3 decimals ("+1.234 %")
-std::string percent_text(double relative);
-/// v with a fixed number of decimals
-std::string fixed_text(double v, int decimals);
+using cairn::fixed_text;
+using cairn::number_text;
+using cairn::percent_text;
 /// a CSV field, quoted when it holds a comma, a quote or a newline (newlines become spaces)
 std::string csv_field(const std::string& s);
 /// text safe inside HTML element content and quoted attribute values (& < > " ' escaped)

@@ -81,7 +81,7 @@ Scene point_scene(const StudyCase& c, const std::string& scheme, int n) {
     return scene;
 }
 
-StudyPoint inertia_point(const StudyCase& c, const std::string& scheme, int n, const EngineInertia& engine) {
+StudyPoint inertia_point(const StudyCase& c, const std::string& scheme, int n, const BlockInertia& engine) {
     StudyPoint p;
     p.case_name = c.name;
     p.scheme = scheme;
@@ -125,7 +125,7 @@ StudyPoint inertia_point(const StudyCase& c, const std::string& scheme, int n, c
 }
 
 std::vector<StudyPoint> run_study(const std::vector<StudyCase>& cases, const StudyOptions& options,
-                                  const std::vector<BackendInfo>& backends, const EngineInertia& engine) {
+                                  const std::vector<BackendInfo>& backends, const BlockInertia& engine) {
     std::vector<StudyPoint> points;
     std::vector<Scene> scenes;
     for (const auto& c : cases) {

@@ -57,10 +57,6 @@ struct StudyPoint {
     double ratio_error() const { return omega_ratio / omega_ratio_housner - 1.0; }
 };
 
-/// the engine's own rotational inertia (kg·m², block axes, about the centre) of block b of a scene
-/// as it would assemble it; empty = not asked
-using EngineInertia = std::function<Mat3(const Scene& scene, int block)>;
-
 /// Options of the study.
 struct StudyOptions {
     std::vector<int> ns{1, 2, 4, 8};   ///< elements per side
@@ -77,11 +73,11 @@ std::vector<StudyCase> default_cases(const std::string& scenarios_dir);
 Scene point_scene(const StudyCase& c, const std::string& scheme, int n);
 
 /// the inertia columns of a point (no run)
-StudyPoint inertia_point(const StudyCase& c, const std::string& scheme, int n, const EngineInertia& engine);
+StudyPoint inertia_point(const StudyCase& c, const std::string& scheme, int n, const BlockInertia& engine);
 
 /// run the study on the run layer with dem of `backends`: every case × scheme × n, plus one rigid
 /// point per case
 std::vector<StudyPoint> run_study(const std::vector<StudyCase>& cases, const StudyOptions& options,
-                                  const std::vector<BackendInfo>& backends, const EngineInertia& engine);
+                                  const std::vector<BackendInfo>& backends, const BlockInertia& engine);
 
 }  // namespace cairn::study

@@ -5,6 +5,7 @@
 #include <sstream>
 
 #include "output/atomic_write.hpp"
+#include "output/number_format.hpp"
 #include "study/study_report.hpp"
 
 #include "report/gnuplot.hpp"
@@ -19,13 +20,8 @@ const std::vector<std::string> kCases{"rocking", "rocking_slender", "impact"};
 /// |x| in %, floored at 1e-4 % so that a log axis can show it
 double pct(double x) { return std::isfinite(x) ? std::max(std::abs(x) * 100.0, 1e-4) : NAN; }
 
-std::string nan_dash(double v) {
-    if (!std::isfinite(v)) return "NaN";
-    std::ostringstream o;
-    o.precision(10);
-    o << v;
-    return o.str();
-}
+/// 10 significant digits, "NaN" for a missing number (gnuplot skips it)
+std::string nan_dash(double v) { return number_format("%.10g", v, "NaN"); }
 
 /// DIR/figures/inertia_<case>.dat: one index block per scheme, then the rigid point
 void write_data(const std::string& path, const std::vector<StudyPoint>& pts, const std::string& c) {

@@ -9,6 +9,7 @@
 #include <sstream>
 
 #include "output/atomic_write.hpp"
+#include "output/number_format.hpp"
 
 namespace cairn::study {
 
@@ -17,12 +18,8 @@ namespace {
 const std::vector<std::string> kSchemes{"barycentre", "lumped", "consistent", "corrected", "rigid"};
 const std::vector<std::string> kCases{"rocking", "rocking_slender", "impact"};
 
-std::string fmt(const char* f, double v) {
-    if (!std::isfinite(v)) return "–";
-    char b[64];
-    std::snprintf(b, sizeof b, f, v);
-    return b;
-}
+/// a number of the tables, "–" when there is none
+std::string fmt(const char* f, double v) { return number_format(f, v, "–"); }
 std::string signed_pct(double x, const char* f = "%+.3f %%") { return fmt(f, 100.0 * x); }
 
 std::string mesh_name(const StudyPoint& p) {

@@ -22,12 +22,8 @@ namespace cairn::sweep {
 
 namespace {
 
-std::string num(double v, int digits = 10) {
-    if (!std::isfinite(v)) return "";
-    char buf[40];
-    std::snprintf(buf, sizeof buf, "%.*g", digits, v);
-    return buf;
-}
+/// 10 significant digits unless told, "" for NaN or infinity
+std::string num(double v, int digits = 10) { return number_text(v, digits); }
 
 /// One curve: the runs of one scene and axis-value combination on one backend.
 struct Group {

@@ -22,6 +22,10 @@ enum class ContactModel {
 /// makes a new backend
 using BackendFactory = std::function<std::unique_ptr<Backend>()>;
 
+/// the rotational inertia (kg·m², block axes, about the block's centre) of block b of a scene as
+/// the engine's own model assembles it
+using BlockInertia = std::function<Mat3(const Scene& scene, int block)>;
+
 /// The facts of one backend.
 struct BackendInfo {
     std::string name;                           ///< registry name, e.g. "dem"
@@ -32,6 +36,8 @@ struct BackendInfo {
     /// two runs may go on at once in one process (false: a library with global state)
     bool thread_safe = true;
     BackendFactory make;                        ///< a new backend
+    /// its own assembled inertia of a deformable block (the mesh-inertia study); empty: not told
+    BlockInertia block_inertia;
 };
 
 /// the facts named `name` in `list`; throws cairn::Error naming the available ones otherwise

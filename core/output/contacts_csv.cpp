@@ -3,6 +3,7 @@
 #include <cstdio>
 #include <stdexcept>
 
+#include "output/number_format.hpp"
 
 namespace cairn {
 
@@ -14,14 +15,9 @@ std::vector<std::string> contact_columns() {
 std::string contact_rows(const Scene& scene, double t, const std::vector<ContactPoint>& points) {
     auto name = [&](int b) { return b >= 0 && size_t(b) < scene.blocks.size() ? scene.blocks[size_t(b)].name : "?"; };
     std::string out;
-    char buf[64];
-    auto put = [&](double x) {
-        std::snprintf(buf, sizeof buf, ",%.17g", x);
-        out += buf;
-    };
+    auto put = [&](double x) { append_exact(out, x, ','); };
     for (const ContactPoint& p : points) {
-        std::snprintf(buf, sizeof buf, "%.17g", t);
-        out += buf;
+        append_exact(out, t);
         out += "," + name(p.block_a) + "," + name(p.block_b);
         for (const Vec3* v : {&p.position, &p.normal}) put(v->x()), put(v->y()), put(v->z());
         put(p.normal_force.dot(p.normal));

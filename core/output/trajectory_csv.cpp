@@ -3,6 +3,7 @@
 #include <cstdio>
 #include <stdexcept>
 
+#include "output/number_format.hpp"
 
 namespace cairn {
 
@@ -22,17 +23,6 @@ std::vector<std::string> trajectory_columns(const Scene& scene) {
     return cols;
 }
 
-namespace {
-
-/// append x with 17 significant digits (exact round trip of a double)
-void put(std::string& line, double x) {
-    char buf[40];
-    std::snprintf(buf, sizeof buf, ",%.17g", x);
-    line += buf;
-}
-
-}  // namespace
-
 TrajectoryCsvWriter::TrajectoryCsvWriter(std::ostream& out, const Scene& scene)
     : out_(out), probes_(scene.probes.size()) {
     for (const auto& b : scene.blocks) free_blocks_ += b.fixed ? 0 : 1;
@@ -48,20 +38,19 @@ void TrajectoryCsvWriter::row(const Sample& s) {
                                " does not match the scene's probes and free blocks");
     if (first_) total0_ = s.energy.total();
     first_ = false;
-    char buf[40];
-    std::snprintf(buf, sizeof buf, "%.17g", s.t);
-    line_ = buf;
+    line_.clear();
+    append_exact(line_, s.t);
     for (const auto& p : s.probes)
-        for (int k = 0; k < 3; ++k) put(line_, p[k]);
+        for (int k = 0; k < 3; ++k) append_exact(line_, p[k], ',');
     for (const auto& b : s.blocks) {
-        for (int k = 0; k < 3; ++k) put(line_, b.position[k]);
+        for (int k = 0; k < 3; ++k) append_exact(line_, b.position[k], ',');
         for (double q : {b.orientation.w(), b.orientation.x(), b.orientation.y(), b.orientation.z()})
-            put(line_, q);
+            append_exact(line_, q, ',');
     }
     const Energies& e = s.energy;
     for (double x : {e.kinetic, e.potential, e.contact, e.strain, e.dissipated, e.external,
                      e.total() - total0_})
-        put(line_, x);
+        append_exact(line_, x, ',');
     line_ += "," + std::to_string(s.contacts);
     out_ << line_ << '\n';
 }

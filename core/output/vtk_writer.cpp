@@ -3,15 +3,17 @@
 #include <cassert>
 #include <cstdio>
 
+#include "output/number_format.hpp"
+
 namespace cairn {
 
 namespace {
 
 /// a double with 17 significant digits (round-trips exactly)
 void put(std::ostream& out, double x) {
-    char buf[32];
-    std::snprintf(buf, sizeof buf, "%.17g", x);
-    out << buf;
+    std::string s;
+    append_exact(s, x);
+    out << s;
 }
 
 void field(std::ostream& out, const VtkField& f) {

@@ -37,18 +37,12 @@ std::string non_finite(const Sample& s, const Scene& scene) {
     return {};
 }
 
-std::string format_g(const char* fmt, double x) {
-    char buf[64];
-    std::snprintf(buf, sizeof buf, fmt, x);
-    return buf;
-}
-
 /// the message of an unstable run: time, reason, time step and critical step
 std::string unstable_message(double t, const std::string& why, double dt, double critical) {
-    std::string m = "unstable at t = " + format_g("%.6g", t) + " s: " +
+    std::string m = "unstable at t = " + number_format("%.6g", t) + " s: " +
                     (why.empty() ? std::string("the backend reported an unstable step") : why) +
-                    "; time step " + format_g("%.2e", dt) + " s, ";
-    m += critical > 0.0 ? "critical step " + format_g("%.2e", critical) + " s"
+                    "; time step " + number_format("%.2e", dt) + " s, ";
+    m += critical > 0.0 ? "critical step " + number_format("%.2e", critical) + " s"
                         : std::string("critical step unknown");
     return m + " (run with a smaller dt or dt = \"auto\")";
 }
@@ -78,8 +72,8 @@ RunResult run_scene(Backend& backend, const Scene& scene, const RunOptions& opti
         r.max_balance_error = std::max(r.max_balance_error, std::abs(err) / scale.motion);
         if (std::abs(err) > kDriftBound * scale.motion) r.energy_drift = true;
         if (err > kGrowthBound * scale.growth)
-            return "energy growing without a source (balance error " + format_g("%.3g", err) +
-                   " J against an energy scale of " + format_g("%.3g", scale.growth) + " J)";
+            return "energy growing without a source (balance error " + number_format("%.3g", err) +
+                   " J against an energy scale of " + number_format("%.3g", scale.growth) + " J)";
         return {};
     };
 
@@ -119,7 +113,7 @@ RunResult run_scene(Backend& backend, const Scene& scene, const RunOptions& opti
             if (sampled != r.steps) ok = record(r.steps);
             if (ok) {
                 r.status = RunStatus::interrupted;
-                r.message = "interrupted at t = " + format_g("%.6g", double(r.steps) * r.dt) +
+                r.message = "interrupted at t = " + number_format("%.6g", double(r.steps) * r.dt) +
                             " s after " + std::to_string(r.steps) + " of " +
                             std::to_string(total_steps) + " steps";
             }

@@ -6,6 +6,7 @@
 
 #include "geometry/hexahedron.hpp"
 #include "geometry/overlap.hpp"
+#include "output/number_format.hpp"
 
 namespace cairn {
 
@@ -13,9 +14,7 @@ namespace {
 
 // a number as TOML, 10 significant digits (always a float: 1e+09, 0.25, 3.0)
 std::string num(double x) {
-    char buf[40];
-    std::snprintf(buf, sizeof buf, std::abs(x) >= 1e6 ? "%.9e" : "%.10g", x);
-    std::string s = buf;
+    std::string s = number_format(std::abs(x) >= 1e6 ? "%.9e" : "%.10g", x);
     if (auto e = s.find('e'); e != std::string::npos && s.find('.') != std::string::npos) {
         // drop the mantissa's trailing zeros (and its point if nothing is left after it)
         std::size_t m = e;

@@ -1,5 +1,6 @@
 // The contact springs' critical step of a free cube resting on one side, against the closed forms
-// of its spring-mass modes, and the backend's automatic step (the safety factor times it).
+// of its spring-mass modes, the elements' critical step of a deformable cube against its
+// dilatational mode, and the backend's automatic step (the safety factor times it).
 #include <catch2/catch.hpp>
 
 #include <cmath>
@@ -112,4 +113,31 @@ TEST_CASE("dem time step: run.dt = auto takes the safety factor times the critic
     auto backend = test::build_dem(s);
     CHECK(backend->critical_step() == Approx(crit).epsilon(kEigenTol));
     CHECK(backend->time_step() == Approx(0.1 * crit).epsilon(kEigenTol));
+}
+
+TEST_CASE("dem time step: a lumped hex8 cube's critical step is its uniform dilatation's", "[dem][time_step]") {
+    // one fully integrated hex8 of edge L with lumped mass ρL³/8 per corner: the highest mode is
+    // the uniform expansion u = ε·x (strain energy ½ε²(9λ+6μ)L³, corners moving ε·L·√3/2), so
+    // ω² = 4(3λ+2μ)/(ρL²) and Δt = 2/ω = (L/c_d)·√((λ+2μ)/(3λ+2μ)), c_d = √((λ+2μ)/ρ) the
+    // dilatational wave speed; at ν = 0.2 (λ = 2μ/3) that is √(2/3)·L/c_d
+    for (const double nu : {0.2, 0.3}) {
+        Scene s = cube_scene(ContactScheme::overlap, 3e7, 3e7);
+        s.materials[0].poisson = nu;
+        s.blocks[0].model = BlockModel::deformable;
+        s.blocks[0].mesh.mass = MassScheme::lumped;
+        const Material& m = s.materials[0];
+        const double lambda = m.young * nu / ((1 + nu) * (1 - 2 * nu)), mu = m.young / (2 * (1 + nu));
+        const double c_d = std::sqrt((lambda + 2 * mu) / m.density);
+        const double expected = kEdge / c_d * std::sqrt((lambda + 2 * mu) / (3 * lambda + 2 * mu));
+        if (nu == 0.2) CHECK(expected == Approx(std::sqrt(2.0 / 3.0) * kEdge / c_d).epsilon(1e-14));
+        std::vector<dem::Block> blocks{cube(s)};
+        REQUIRE(blocks[0].deformable);
+        // a generalised eigensolver of a 24 x 24 pair: a few ulp of the largest eigenvalue
+        CHECK(dem::element_critical_step(blocks) == Approx(expected).epsilon(kEigenTol));
+        // stiffness damping β: ζ = β·ω/2 lowers it to 2/ω·(√(1+ζ²) − ζ)
+        s.damping.beta = 1e-5;
+        std::vector<dem::Block> damped{cube(s)};
+        const double w = 2.0 / expected, zeta = 0.5 * 1e-5 * w;
+        CHECK(dem::element_critical_step(damped) == Approx(2.0 / w * (std::sqrt(1.0 + zeta * zeta) - zeta)).epsilon(kEigenTol));
+    }
 }

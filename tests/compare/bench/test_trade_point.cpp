@@ -82,21 +82,15 @@ TEST_CASE("bench trade: trade.csv round-trips and skips a row cut by an interrup
     CHECK(back[0].wall_seconds == Approx(0.25));
 }
 
-TEST_CASE("bench trade: a rerun runs only the points missing from trade.csv", "[bench]") {
+TEST_CASE("bench trade: a rerun runs only the points the run layer has not kept", "[bench]") {
     const auto dir = std::filesystem::path(CAIRN_BINARY_DIR) / "test_scratch" / "compare" / "bench_resume";
     std::filesystem::remove_all(dir);
     std::filesystem::create_directories(dir);
     const std::string csv = (dir / "trade.csv").string();
-    // two points already measured, written as an interrupted run left them (no final newline)
     TradeConfig a, b, c;
     a.point = pt("dem-rigid", "kn=3e+07 dt_safety=0.1", 0.0, NAN);
     b.point = pt("bullet-matched", "kn=3e+07 dt=0.0001", 0.0, NAN);
     c.point = pt("ode-matched", "kn=3e+07 dt=0.0001", 0.0, NAN);
-    {
-        std::ofstream out(csv);
-        out << trade_csv_header() << "\n" << trade_csv_row(pt("dem-rigid", "kn=3e+07 dt_safety=0.1", 1.0, 0.01)) << "\n"
-            << trade_csv_row(pt("bullet-matched", "kn=3e+07 dt=0.0001", 2.0, 0.02));
-    }
     std::vector<std::string> made;
     std::vector<BackendInfo> make;
     for (const std::string name : {"dem", "bullet", "ode"}) {
@@ -108,17 +102,26 @@ TEST_CASE("bench trade: a rerun runs only the points missing from trade.csv", "[
         };
         make.push_back(b);
     }
+    // the first two points measured, as an interrupted sweep leaves them
+    CHECK(run_trade({a, b}, csv, TradeOptions{3, 2, true}, make).size() == 2);
+    CHECK(made.size() == 2);
+    made.clear();
     const auto pts = run_trade({a, b, c}, csv, TradeOptions{3, 2, true}, make);
-    // only the missing point ran (and was refused); the file now holds all three
+    // only the missing point ran (and was refused); the file holds all three, kept ones first
     REQUIRE(made.size() == 1);
     CHECK(made[0] == "ode");
     CHECK(pts.size() == 3);
     const auto again = read_trade_csv(csv);
     REQUIRE(again.size() == 3);
+    CHECK(again[0].key() == a.point.key());
+    CHECK(again[0].status == "refused");
     CHECK(again[2].key() == c.point.key());
     CHECK(again[2].status == "refused");
-    // a second rerun has nothing left to do
+    // a second rerun has nothing left to do and writes the same rows
     made.clear();
     CHECK(run_trade({a, b, c}, csv, TradeOptions{3, 2, true}, make).size() == 3);
     CHECK(made.empty());
+    const auto third = read_trade_csv(csv);
+    REQUIRE(third.size() == 3);
+    for (size_t i = 0; i < 3; ++i) CHECK(trade_csv_row(third[i]) == trade_csv_row(again[i]));
 }
