@@ -223,7 +223,7 @@ std::vector<TradePoint> run_trade(const std::vector<TradeConfig>& configs, const
         done.push_back(p);
     });
     if (!options.quiet && resumed)
-        std::cerr << "trade: " << resumed << " points kept from " << kept.path() << ", " << configs.size() - resumed
+        std::cerr << "trade: " << resumed << " points already in " << kept.path() << ", " << configs.size() - resumed
                   << " run\n";
     return done;
 }

@@ -1,5 +1,5 @@
 // end to end: a quick `cairn bench trade --cases impact` writes trade.csv and the bench section, and
-// a rerun finds every point already there (the executable is built with the tests: scripts/test.sh)
+// a rerun finds every point already kept by the run layer (the executable is built with the tests: scripts/test.sh)
 #include <catch2/catch.hpp>
 
 #include "app/cairn_process.hpp"
@@ -32,4 +32,5 @@ TEST_CASE("cairn bench trade --cases impact --quick: trade.csv, tables, resume",
     REQUIRE(again.exit_code == 0);
     CHECK(again.err.find(std::to_string(pts.size()) + " points already in") != std::string::npos);
     CHECK(bench::read_trade_csv((out / "trade.csv").string()).size() == pts.size());
+    CHECK(again.err.find("trade.resume") != std::string::npos);   // the run layer's resume log
 }
