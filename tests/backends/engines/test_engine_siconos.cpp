@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "engine_scenes.hpp"
+#include "bench/trade_sweep.hpp"
 #include "registry.hpp"
 #include "scene/scene_io.hpp"
 #include "support/scene_builder.hpp"
@@ -137,4 +138,21 @@ TEST_CASE("siconos: a cube on a 30 degree slope slides at mu 0.4 and holds at 0.
         // a rigid stick: no more than the solver's tolerance lets creep, 0.01 mm in 0.3 s
         CHECK(moved < 1e-5);
     }
+}
+
+// the speed–accuracy trade turns siconos's step and solver tolerance (not an iteration cap), and
+// the tolerance it writes is the one the run uses
+TEST_CASE("siconos: the trade sweep's knobs are its step and solver tolerance", "[engines][siconos]") {
+    if (!built()) return;
+    const std::string path = std::string(CAIRN_SOURCE_DIR) + "/scenarios/paper/rocking.toml";
+    const auto configs = bench::trade_configs("rocking", path, {"siconos"}, bench::SweepSize::standard);
+    REQUIRE(configs.size() == 15);   // 5 steps × 3 tolerances
+    CHECK(configs.front().point.knobs == "dt=0.001 tolerance=0.001");
+    CHECK(configs.back().point.knobs == "dt=1e-05 tolerance=1e-07");
+    auto b = build_backend("siconos", configs.back().scene, configs.back().contact_mode);
+    CHECK(b->time_step() == 1e-5);
+    const auto notes = b->notes();
+    CHECK(std::any_of(notes.begin(), notes.end(),
+                      [](const std::string& n) { return n.find("by nsgs, tolerance 1e-07,") != std::string::npos; }));
+    CHECK(bench::trade_configs("impact", path, {"siconos"}, bench::SweepSize::standard).empty());   // rigid only
 }
