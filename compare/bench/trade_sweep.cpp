@@ -28,19 +28,21 @@ struct Grids {
     std::vector<double> rock_kn, impact_kn, dt_safety, engine_dt;
     std::vector<int> ns, iterations;
     std::vector<std::string> schemes;
+    std::vector<double> tolerances;   // siconos: the friction-contact solver's tolerance (relative residual)
 };
 
 Grids grids(SweepSize size) {
     switch (size) {
         case SweepSize::quick:
-            return {{3e9}, {3e7}, {0.2, 0.05}, {1e-3, 1e-4}, {}, {50}, {}};
+            return {{3e9}, {3e7}, {0.2, 0.05}, {1e-3, 1e-4}, {}, {50}, {}, {1e-5}};
         case SweepSize::standard:
             return {{3e7, 3e8, 3e9}, {3e7, 3e9}, {0.4, 0.2, 0.1, 0.05, 0.02}, {1e-3, 3e-4, 1e-4, 3e-5, 1e-5},
-                    {1, 2, 4}, {10, 50}, {"lumped", "consistent", "corrected"}};
+                    {1, 2, 4}, {10, 50}, {"lumped", "consistent", "corrected"}, {1e-3, 1e-5, 1e-7}};
         case SweepSize::full:
             return {{3e7, 1e8, 3e8, 1e9, 3e9, 1e10}, {3e7, 3e8, 3e9},
                     {0.8, 0.4, 0.2, 0.1, 0.05, 0.02, 0.01}, {2e-3, 1e-3, 3e-4, 1e-4, 3e-5, 1e-5, 3e-6},
-                    {1, 2, 4, 8}, {5, 10, 20, 50, 100}, {"lumped", "consistent", "barycentre", "corrected"}};
+                    {1, 2, 4, 8}, {5, 10, 20, 50, 100}, {"lumped", "consistent", "barycentre", "corrected"},
+                    {1e-2, 1e-3, 1e-4, 1e-5, 1e-6, 1e-7}};
     }
     return {};
 }
@@ -133,6 +135,13 @@ std::vector<TradeConfig> trade_configs(const std::string& case_name, const std::
             if (be == "ode")
                 b.add(be, be + "-" + mode, mode, 3e7, {{"dt", g(dt)}, {"stepper", "step"}},
                       {"run.dt=" + g(dt), "backends.ode.stepper=\"step\""});
+            // siconos: its solver's tolerance (NSGS runs to it, up to its 1000 iterations)
+            if (be == "siconos") {
+                for (double tol : gr.tolerances)
+                    b.add(be, be + "-" + mode, mode, 3e7, {{"dt", g(dt)}, {"tolerance", g(tol)}},
+                          {"run.dt=" + g(dt), "backends.siconos.tolerance=" + g(tol)});
+                continue;
+            }
             for (int it : gr.iterations) {
                 if (be == "ode")
                     b.add(be, be + "-" + mode, mode, 3e7, {{"dt", g(dt)}, {"stepper", "quickstep"}, {"iterations", g(it)}},
