@@ -126,6 +126,18 @@ void write_overturning_study(const std::string& dir, const OverturningSetup& s, 
                   "A backend run counts as overturned once |theta| passes 60 degrees; it is safe once, after the pulse, " +
                   "its energy above rest is below half of m g R (1 - cos alpha). The minimum overturning amplitude " +
                   "is bisected " + std::to_string(s.bisect) + " times from each method's own grid bracket.");
+    {
+        // the in-house engine's contact, on which its error depends (the other engines' own contacts ignore it)
+        const ContactLaw c = parse_scene(s.scene_text, s.scene_source, s.overrides).contact;
+        std::string text = "Contact of the in-house engine (dem): scheme " + std::string(to_string(c.scheme));
+        if (c.scheme == ContactScheme::paper) text += ", hitting points at most " + report::number_text(c.grid_spacing, 6) + " m apart";
+        text += ", kn " + report::number_text(c.kn, 6) + " N/m3, ks " + report::number_text(c.ks, 6) + " N/m3, ";
+        if (c.damping_rule == ContactDampingRule::none) text += "no contact damping";
+        else if (c.damping_rule == ContactDampingRule::ratio) text += "damping ratio " + report::number_text(c.damping, 6);
+        else text += "damping time " + report::number_text(c.damping, 6) + " s";
+        text += ", friction " + report::number_text(c.friction, 6) + ".";
+        doc.paragraph(text);
+    }
     for (const auto& f : figures) doc.image(f, "overturning spectrum: the oracle's boundary and each backend's minimum");
     if (!note.empty()) doc.paragraph("Figures: " + note);
 

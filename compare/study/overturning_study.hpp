@@ -42,8 +42,11 @@ struct RockingBlockOf {
 /// the scene's only free block, upright, with gravity along −z; throws cairn::Error naming the key otherwise
 RockingBlockOf rocking_block_of(const Scene& scene);
 
-/// the block of `W × D × H` m (x, y, z) on a fixed 0.5 m slab, as TOML (stone, kn = 3e9 N/m³, ζ = 0.05,
-/// friction 5 so that the block rocks and never slides)
+/// the block of `W × D × H` m (x, y, z) on a fixed 0.5 m slab, as TOML (stone, friction 5 so that the
+/// block rocks and never slides). The in-house engine's contact is set to rock like Housner's block:
+/// hitting points only on the two bottom edges across the rocking axis (grid spacing W), kn = ks =
+/// 3e10 N/m³, ζ = 0.6 (docs/studies.md, "The in-house engine's contact"); the other engines' own
+/// contacts ignore these keys
 std::string block_scene_text(double width, double depth, double height);
 
 /// the setup's default grid: 8 amplitudes and 9 frequencies ω_p/p = 1…9
