@@ -21,4 +21,10 @@ std::vector<std::string> chosen_backends(const std::vector<std::string>& given) 
     return given;
 }
 
+std::vector<BackendInfo> backend_infos(const std::vector<std::string>& names) {
+    std::vector<BackendInfo> out;
+    for (const auto& n : names) out.push_back(find_backend(available_backends(), n));
+    return out;
+}
+
 }  // namespace cairn

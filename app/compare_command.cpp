@@ -67,7 +67,7 @@ int compare_command(const CompareOptions& options) {
         if (c.name.empty() || c.name[0] == '.') c.name = "scene" + c.name;
         c.scene = load_scene(path, overrides);
         check_backend_tables(c.scene, path);
-        for (const auto& v : scene_compare::compare_variants(c.scene, backends, options.model)) {
+        for (const auto& v : scene_compare::compare_variants(c.scene, backend_infos(backends), options.model)) {
             validation::CaseRun r;
             r.case_name = c.name;
             r.variant = v;

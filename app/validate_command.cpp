@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <iostream>
 
+#include "backend_option.hpp"
 #include "commands.hpp"
 #include "error.hpp"
 #include "output/atomic_write.hpp"
@@ -73,7 +74,7 @@ int validate_command(const ValidateOptions& options) {
             c.scene = load_scene(path, overrides);
             check_backend_tables(c.scene, path);
             if (!c.scene.reference) throw Error(path + ": no [reference] table: nothing to validate against");
-            for (const auto& v : validation::variants_for(c.scene, backends)) {
+            for (const auto& v : validation::variants_for(c.scene, backend_infos(backends))) {
                 validation::CaseRun r;
                 r.case_name = c.name;
                 r.variant = v;

@@ -2,21 +2,14 @@
 
 namespace cairn::scene_compare {
 
-std::vector<validation::Variant> compare_variants(const Scene& scene, const std::vector<std::string>& backends,
+std::vector<validation::Variant> compare_variants(const Scene& scene, const std::vector<BackendInfo>& backends,
                                                   const std::string& model) {
     std::vector<validation::Variant> all;
     if (scene.reference) {
         all = validation::variants_for(scene, backends);
     } else {
-        for (const auto& b : backends) {
-            if (b == "dem") {
-                all.push_back({"dem-rigid", b, "rigid", "rigid"});
-                all.push_back({"dem-deformable", b, "rigid", "deformable"});
-            } else {
-                all.push_back({b + "-rigid", b, "rigid", "rigid"});
-                all.push_back({b + "-matched", b, "matched", "rigid"});
-            }
-        }
+        for (const auto& b : backends)
+            for (auto& v : validation::backend_variants(b, {"rigid", "matched"})) all.push_back(std::move(v));
     }
     std::vector<validation::Variant> out;
     for (auto& v : all)

@@ -10,9 +10,9 @@
 
 namespace cairn::scene_compare {
 
-/// the variants of `scene` among `backends` (registry names, in that order) whose block model is
-/// `model` ("rigid", "deformable" or "both"); the reference engines have rigid blocks only
-std::vector<validation::Variant> compare_variants(const Scene& scene, const std::vector<std::string>& backends,
+/// the variants of `scene` among `backends` (in that order) whose block model is `model` ("rigid",
+/// "deformable" or "both"); the reference engines have rigid blocks only
+std::vector<validation::Variant> compare_variants(const Scene& scene, const std::vector<BackendInfo>& backends,
                                                   const std::string& model);
 
 }  // namespace cairn::scene_compare

@@ -21,21 +21,38 @@ const std::vector<std::string>& paper_cases() {
     return names;
 }
 
-std::vector<Variant> variants_for(const Scene& scene, const std::vector<std::string>& backends) {
+namespace {
+
+Support support_of(const BackendInfo& b, Feature f) {
+    for (const auto& c : b.capabilities)
+        if (c.feature == f) return c.support;
+    return Support::none;
+}
+
+}  // namespace
+
+std::vector<Variant> backend_variants(const BackendInfo& b, const std::vector<std::string>& modes) {
+    std::vector<Variant> out;
+    if (b.contact == ContactModel::penalty) {
+        out.push_back({b.name + "-rigid", b.name, "rigid", "rigid"});
+        if (support_of(b, Feature::deformable_blocks) != Support::none)
+            out.push_back({b.name + "-deformable", b.name, "rigid", "deformable"});
+        return out;
+    }
+    const bool springs = support_of(b, Feature::penalty_stiffness) != Support::none;
+    for (const auto& m : modes)
+        if (m != "matched" || springs) out.push_back({b.name + "-" + m, b.name, m, "rigid"});
+    return out;
+}
+
+std::vector<Variant> variants_for(const Scene& scene, const std::vector<BackendInfo>& backends) {
     // the reference kind decides which engine contact modes it can judge; an unknown kind is an
     // error here rather than a case run on dem alone
     std::vector<std::string> modes;
     if (scene.reference) modes = cases::case_kind(scene.reference->kind, scene.source).contact_modes(scene);
     std::vector<Variant> out;
-    for (const auto& b : backends) {
-        if (b == "dem") {
-            out.push_back({"dem-rigid", b, "rigid", "rigid"});
-            out.push_back({"dem-deformable", b, "rigid", "deformable"});
-            continue;
-        }
-        for (const auto& m : modes)
-            if (m != "matched" || b != "siconos") out.push_back({b + "-" + m, b, m, "rigid"});   // siconos: rigid only
-    }
+    for (const auto& b : backends)
+        for (auto& v : backend_variants(b, modes)) out.push_back(std::move(v));
     return out;
 }
 

@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include "backend/backend_info.hpp"
 #include "cases/case_analysis.hpp"
 #include "scene/scene.hpp"
 
@@ -29,10 +30,15 @@ cases::ContactKind contact_kind(const Variant& v, const Scene& scene);
 /// the paper's validation cases, in report order (scene names under scenarios/paper/)
 const std::vector<std::string>& paper_cases();
 
-/// the variants that make sense for `scene` among `backends` (registry names, in that order):
-/// dem rigid and deformable always; the reference engines in each contact mode the scene's
-/// reference kind can judge (cases::CaseKind::contact_modes); none for a scene without a
-/// reference. Throws cairn::Error for a reference kind without a CaseKind.
-std::vector<Variant> variants_for(const Scene& scene, const std::vector<std::string>& backends);
+/// the variants of one backend: a penalty engine (dem) runs rigid blocks and, when it represents
+/// them, deformable ones; a rigid-contact engine runs each of `modes` ("rigid", "matched") it can
+/// take — "matched" only when it stands in some penalty stiffness (its capability row)
+std::vector<Variant> backend_variants(const BackendInfo& backend, const std::vector<std::string>& modes);
+
+/// the variants that make sense for `scene` among `backends` (in that order): the penalty engine's
+/// block models always; the rigid-contact engines in each contact mode the scene's reference kind
+/// can judge (cases::CaseKind::contact_modes); none for a scene without a reference. Throws
+/// cairn::Error for a reference kind without a CaseKind.
+std::vector<Variant> variants_for(const Scene& scene, const std::vector<BackendInfo>& backends);
 
 }  // namespace cairn::validation

@@ -11,6 +11,7 @@
 #include "cases/case_kind.hpp"
 #include "scene/reference_kinds.hpp"
 #include "scene/scene_io.hpp"
+#include "support/backend_facts.hpp"
 #include "support/scene_builder.hpp"
 #include "validation/plan.hpp"
 
@@ -187,7 +188,7 @@ TEST_CASE("every reference kind measures a synthetic run of known answer", "[cas
         const auto modes = k->contact_modes(s);
         CHECK_FALSE(modes.empty());
         for (const auto& mode : modes) CHECK((mode == "rigid" || mode == "matched"));
-        const auto variants = validation::variants_for(s, {"dem", "bullet"});
+        const auto variants = validation::variants_for(s, {test::penalty_engine("dem"), test::rigid_engine("bullet")});
         CHECK(variants.size() == 2 + modes.size());
     }
 }
@@ -197,7 +198,7 @@ TEST_CASE("a scene whose reference kind has no CaseKind is refused, not run on d
     const int a = test::add_box(s, "A", Vec3(0.5, 0.5, 0.5), Vec3(0, 0, 0.25), false);
     s.source = "made_up.toml";
     s.reference = ReferenceDef{"made_up", a, {}};
-    CHECK_THROWS_WITH(validation::variants_for(s, {"dem", "bullet"}), Catch::Contains("made_up.toml"));
+    CHECK_THROWS_WITH(validation::variants_for(s, {test::penalty_engine("dem"), test::rigid_engine("bullet")}), Catch::Contains("made_up.toml"));
     CHECK_THROWS_WITH(cases::analyse_case(s, synthetic_run(s, 0.01, 1e-3, still, upright), {true}),
                       Catch::Contains("made_up"));
 }

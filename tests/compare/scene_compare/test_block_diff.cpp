@@ -5,6 +5,7 @@
 
 #include "scene_compare/block_diff.hpp"
 #include "scene_compare/variants.hpp"
+#include "support/backend_facts.hpp"
 
 using namespace cairn;
 using namespace cairn::scene_compare;
@@ -65,10 +66,13 @@ TEST_CASE("a constant offset gives that RMS and diverges at once, a linear drift
 
 TEST_CASE("a scene without a reference runs every variant, and --model filters the block models", "[scene_compare]") {
     Scene s;
-    const auto all = compare_variants(s, {"dem", "bullet"}, "both");
+    const std::vector<BackendInfo> engines = {test::penalty_engine("dem"), test::rigid_engine("bullet"),
+                                              test::rigid_engine("siconos", false)};
+    const auto all = compare_variants(s, engines, "both");
     std::vector<std::string> names;
     for (const auto& v : all) names.push_back(v.name);
-    CHECK(names == std::vector<std::string>{"dem-rigid", "dem-deformable", "bullet-rigid", "bullet-matched"});
-    CHECK(compare_variants(s, {"dem", "bullet"}, "deformable").size() == 1);
-    CHECK(compare_variants(s, {"dem", "bullet"}, "rigid").size() == 3);
+    // an engine with no spring stand-in (no penalty stiffness in its capability row) has no matched variant
+    CHECK(names == std::vector<std::string>{"dem-rigid", "dem-deformable", "bullet-rigid", "bullet-matched", "siconos-rigid"});
+    CHECK(compare_variants(s, engines, "deformable").size() == 1);
+    CHECK(compare_variants(s, engines, "rigid").size() == 4);
 }
