@@ -65,7 +65,8 @@ protected:
     }
 };
 
-// call f(manifold, point) for every manifold point in contact (distance not positive)
+// call f(manifold, point) for every manifold point in contact: not apart, or pushed by the last
+// solve (split impulse leaves a point that carries the weight a hair apart, distance ~1e-9 m)
 template <class F>
 void for_each_touching_point(const btDynamicsWorld& world, F&& f) {
     btDispatcher* d = const_cast<btDynamicsWorld&>(world).getDispatcher();
@@ -73,7 +74,7 @@ void for_each_touching_point(const btDynamicsWorld& world, F&& f) {
         const btPersistentManifold* pm = d->getManifoldByIndexInternal(m);
         for (int i = 0; i < pm->getNumContacts(); ++i) {
             const btManifoldPoint& p = pm->getContactPoint(i);
-            if (!(p.getDistance() > 0.0)) f(*pm, p);
+            if (!(p.getDistance() > 0.0) || p.m_appliedImpulse > 0.0) f(*pm, p);
         }
     }
 }
@@ -296,7 +297,7 @@ Sample BulletBackend::sample() const {
     s.energy.external = external_work_;
     for_each_touching_point(*world_, [&](const btPersistentManifold&, const btManifoldPoint& p) {
         ++s.contacts;
-        if (matched_) {
+        if (matched_ && p.getDistance() < 0.0) {   // the spring is compressed only below zero distance
             double k = p.m_combinedContactStiffness1;
             s.energy.contact += 0.5 * k * p.getDistance() * p.getDistance();
         }
