@@ -90,6 +90,9 @@ public:
     double margin() const { return margin_; }
     /// keep every point's force in its candidate (Candidate::forces) also on one thread, for output
     void keep_forces(bool keep) { keep_forces_ = keep; }
+    /// overlap scheme: leave out at each refresh the faces that cannot reach their target before
+    /// the next (on by default; off: every face whose box meets the target's, for comparison)
+    void prune(bool on) { prune_ = on; }
 
 private:
     /// candidates [begin, end): forces (kept in the candidate, or spread at once), anchors, totals
@@ -102,6 +105,7 @@ private:
     ContactLaw law_;
     double margin_ = 0.0;
     bool keep_forces_ = false;
+    bool prune_ = true;
     std::vector<Candidate> candidates_;
     std::vector<SideFrames> frames_;   // every block's side frames of this step
     // buffers kept between refreshes so that a steady state allocates nothing

@@ -55,6 +55,27 @@ bool is_target_given(const std::vector<Block>& blocks, int h, int hit_side, int 
 
 }  // namespace
 
+bool may_be_target(const std::vector<Block>& blocks, int h, int hit_side, int t, int target_side, const Vec3& nh,
+                   const Vec3& nt, double turn) {
+    double ah = blocks[h].side_area[hit_side], at = blocks[t].side_area[target_side];
+    double tol = 1e-9 * std::max(ah, at);
+    double vt = blocks[t].volume, vh = blocks[h].volume;
+    const bool by_geometry = std::abs(at - ah) <= tol && blocks[t].fixed == blocks[h].fixed &&
+                             std::abs(vt - vh) <= 1e-9 * std::max(vt, vh);
+    const bool rule = is_target_given(blocks, h, hit_side, t, target_side, nh, nt);
+    if (rule || !by_geometry) return rule;   // areas, fixed and volumes do not change
+    // the geometric rule said no: it holds as long as each component of m = n_t − n_h (each
+    // moves by at most `turn`, half its length by turn/2) stays clear of the thresholds it met
+    const Vec3 m = nt - nh;
+    const double half = 0.5 * m.norm(), d = 2.0 * turn;
+    for (int axis : {2, 0, 1}) {
+        const double a = std::abs(m[axis]);
+        if (a >= half) return !(a - half > d && m[axis] < -d);   // the deciding axis: clear of half and of 0
+        if (a > half - d) return true;                            // might become the deciding axis
+    }
+    return true;
+}
+
 bool is_target(const std::vector<Block>& blocks, int h, int hit_side, int t, int target_side) {
     return is_target_given(blocks, h, hit_side, t, target_side,
                            quad_normal(blocks[h].side_quad(hit_side), Vec2::Zero()),

@@ -54,6 +54,12 @@ struct PairGeometry {
     }
 };
 
+/// the refresh's bound on the target rule (docs/dem.md): false only when side `target_side` of
+/// block t is not the target of side `hit_side` of block h for any outward normals within `turn`
+/// (rad, small) of nh and nt (the rule's geometric tie-break is the only part that can change)
+bool may_be_target(const std::vector<Block>& blocks, int h, int hit_side, int t, int target_side, const Vec3& nh,
+                   const Vec3& nt, double turn);
+
 /// damping coefficients per unit contact area (N·s/m³) of the normal and the shear dashpots
 std::array<double, 2> dashpot_per_area(const ContactLaw& law, const Block& hb, const Block& tb, int hit_side);
 

@@ -6,38 +6,14 @@
 
 #include "contact.hpp"
 #include "contact_overlap.hpp"
+#include "contact_reach.hpp"
 
 namespace cairn::dem {
 
 namespace {
 
 constexpr int kMaxSubdivision = 16;   // the scene reader's bound on contact.subdivision
-constexpr int kMaxConstraints = 16;   // depth, 4 face edges, and per other side: flush and entering
-
-// the affine constraints of a target side s that do not depend on the target face: the point is
-// behind every other side plane (flush within flush_tol) and is not entering through another
-// side o. Where the hitting side faces o (normals opposed, whichever of the two hits), a point
-// nearer to o than to s entered through o: it acts there (the hitting side hits o, the region is
-// shared along the bisector) or not at all. With a tolerance there the depth behind s was
-// measured past the side the point entered through: next to a joint between two voussoirs
-// (sides meeting at 3.6°) the adjacent joint face was pushed along the intrados normal with 16×
-// its penetration. Where the hitting side runs across o (a face flush with the edge of a face
-// below it) the paper's quarter-edge tolerance stays: a point near the edge came through s, and
-// without it a strip of width d along the edge would drop in and out as d changes
-int side_constraints(const PairGeometry& g, int s, const Vec3& hit_normal, std::array<Affine, kMaxConstraints>& out) {
-    int k = 0;
-    const Vec3& ns = g.normal[s];
-    const double cs = ns.dot(g.centre[s]);
-    for (int o = 0; o < 6; ++o) {
-        if (o == s) continue;
-        const Vec3& no = g.normal[o];
-        const double co = no.dot(g.centre[o]);
-        out[k++] = Affine{-no, co + g.flush_tol};
-        const bool facing = hit_normal.dot(no) < -1e-3;
-        out[k++] = Affine{ns - no, co - cs + (facing ? 0.0 : g.closer_tol)};
-    }
-    return k;
-}
+constexpr int kMaxConstraints = kMaxSideConstraints;
 
 }  // namespace
 
@@ -74,7 +50,7 @@ void ContactSet::evaluate_overlap(std::vector<Block>& blocks, double dt, long be
                     }
                     return false;
                 };
-                const int side_count = side_constraints(g, s, frames_[size_t(c.hit_block)].normal[size_t(hit_side)], cons);
+                const int side_count = side_constraints(g, s, frames_[size_t(c.hit_block)].normal[size_t(hit_side)], false, cons);
                 if (missed_by(cons.data(), cons.data() + side_count)) continue;
                 if (!ready) {
                     ready = true;
@@ -114,7 +90,16 @@ void ContactSet::evaluate_overlap(std::vector<Block>& blocks, double dt, long be
                             const OverlapIntegrals in = integrate_depth(poly, ct, nt);
                             if (!(in.d1 > 0.0) || !(in.area > 0.0)) continue;
                             double dmax = 0.0;
-                            for (int i = 0; i < poly.n; ++i) dmax = std::max(dmax, nt.dot(ct - poly.p[i]));
+                            // how deep a point is in the target: its distance to the nearest
+                            // side (a sliver of a face crossing a side nearly square to it may lie
+                            // up to the closer tolerance behind that side, yet just under the one
+                            // it entered through)
+                            for (int i = 0; i < poly.n; ++i) {
+                                double d = nt.dot(ct - poly.p[i]);
+                                for (int o = 0; o < 6; ++o)
+                                    if (o != s) d = std::min(d, g.normal[o].dot(g.centre[o] - poly.p[i]));
+                                dmax = std::max(dmax, d);
+                            }
                             const double depth_ratio = dmax / std::min(hb.min_edge, tb.min_edge);
                             if (depth_ratio > tot.worst_depth) tot.worst_depth = depth_ratio, tot.worst_hit = c.hit_block, tot.worst_target = c.target_block;
                             // the sub-contact's anchor, found or new
