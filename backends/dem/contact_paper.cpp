@@ -21,7 +21,7 @@ void ContactSet::evaluate_paper(std::vector<Block>& blocks, double dt, long begi
             tot.dissipated += a.energy;
             a = Anchor{};
         };
-        if (g.update(blocks, frames_, c.hit_block, c.target_block)) {
+        if (g.update(blocks, frames_, c.hit_block, c.target_block, true)) {
             for (int s = 0; s < 6; ++s)
                 frames[s] = tb.mesh.side_grid[s].size() == 1 ? ParallelogramFrame::of(tb.side_quad(s)) : ParallelogramFrame{};
         }

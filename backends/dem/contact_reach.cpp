@@ -37,8 +37,9 @@ bool may_act(const std::vector<Block>& blocks, const std::vector<SideFrames>& fr
     const int hit_side = hb.mesh.face_side[f];
     const Vec3& nh = frames[size_t(h)].normal[size_t(hit_side)];
     const Quad hq = hb.face_quad(f);
-    // each block turns by at most (margin/2)/r_max: a unit normal by as much
-    const double turn = 0.5 * margin * (1.0 / hb.r_max + 1.0 / tb.r_max);
+    // each block turns by at most kRefreshTurn (and (margin/2)/r_max): a unit normal by as much,
+    // the pair's by the sum; half as much again for the refresh check's look-ahead of one step
+    const double turn = 1.5 * (std::min(kRefreshTurn, 0.5 * margin / hb.r_max) + std::min(kRefreshTurn, 0.5 * margin / tb.r_max));
     // a hitting point and the target point under it drift apart by at most the margin (the
     // flush tolerance: a point of the target's flush shell is that much farther out), so an
     // affine constraint a·p + b changes by at most |a| times that

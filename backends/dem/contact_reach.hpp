@@ -11,6 +11,10 @@
 
 namespace cairn::dem {
 
+/// overlap scheme: the contacts are refreshed before any block turns more than this (rad), so
+/// that a side square to another (within 1e-3 rad: never a hitting side) is left out at refresh
+constexpr double kRefreshTurn = 2e-4;
+
 /// most constraints of one target side: depth, 4 face edges, and per other side flush and entering
 constexpr int kMaxSideConstraints = 16;
 
@@ -23,8 +27,8 @@ int side_constraints(const PairGeometry& g, int s, const Vec3& hit_normal, bool 
                      std::array<Affine, kMaxSideConstraints>& out);
 
 /// true when hitting face f of block h may act on block t at some step before the next refresh,
-/// while no point of either block moves more than half of `margin` (m): some target side faces
-/// the face's side within the turn that motion allows, may be its target, and no constraint of
+/// while no point of either block moves more than half of `margin` (m) nor turns more than
+/// kRefreshTurn: some target side faces the face's side within that turn, may be its target, and no constraint of
 /// that side (with the whole side's depth and edges when the side is one face) misses all four
 /// corners of the face by more than the constraint can change over the motion. `frames` are every
 /// block's side frames now; `g` is scratch for the pair. Whatever this rejects never carries force

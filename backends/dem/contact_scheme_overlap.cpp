@@ -30,7 +30,8 @@ void ContactSet::evaluate_overlap(std::vector<Block>& blocks, double dt, long be
         for (auto& a : c.subs) a.seen = false;
         g.update(blocks, frames_, c.hit_block, c.target_block);
         const int hit_side = hb.mesh.face_side[c.hit_face];
-        if (g.faces_any(hit_side)) {
+        const std::array<char, 6>& faces = g.faces(hit_side);
+        if (faces[0] || faces[1] || faces[2] || faces[3] || faces[4] || faces[5]) {
             const Quad hq = hb.face_quad(c.hit_face);
             Aabb hbox;
             for (int j = 0; j <= n; ++j)
@@ -38,7 +39,7 @@ void ContactSet::evaluate_overlap(std::vector<Block>& blocks, double dt, long be
             const auto [cn_area, ct_area] = dashpot_per_area(law_, hb, tb, hit_side);
             bool ready = false;   // the box: laid at the first side not missed
             for (int s = 0; s < 6; ++s) {
-                if (!g.faces[hit_side][s]) continue;
+                if (!faces[size_t(s)]) continue;
                 // the face lies in the hull of its corners: a constraint none of them meets rules
                 // out every sub-cell at once (most candidate faces stop here), the side's own
                 // constraints first, then each target face's

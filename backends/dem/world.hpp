@@ -47,10 +47,11 @@ public:
     int active_contacts() const { return active_; }
     /// keep per-point contact forces for contact_points(); call before start()
     void record_contacts(bool on) { contacts_.keep_forces(on); }
-    /// overlap scheme: leave out the faces that cannot reach their target before the next refresh
-    /// (default on; off: every face whose box meets the target's), candidates rebuilt; call
-    /// before start()
+    /// overlap scheme: leave out the faces that cannot reach their target before the next refresh,
+    /// refreshing also before a block turns by kRefreshTurn (default on; off: every face whose
+    /// box meets the target's, refreshed on motion alone), candidates rebuilt; call before start()
     void prune_contacts(bool on) {
+        prune_ = on;
         contacts_.prune(on);
         contacts_.refresh(blocks_);
     }
@@ -77,6 +78,7 @@ private:
     double t_ = 0.0;
     int steps_since_refresh_ = 0;
     int early_refreshes_ = 0;
+    bool prune_ = true;
     long long element_updates_ = 0;
     std::vector<Block> blocks_;
     ContactSet contacts_;
