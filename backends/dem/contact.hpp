@@ -23,6 +23,7 @@ struct Anchor {
     int face = -1;              ///< target boundary face the stick point lies on
     Vec2 xi0 = Vec2::Zero();    ///< natural coordinates of the stick point on that face
     double energy = 0.0;        ///< shear-spring energy at the last evaluation, J (dissipated on reset)
+    Vec3 u = Vec3::Zero();      ///< shear-spring offset at the last evaluation, world, m
 };
 
 /// Shear state of one sub-contact of the overlap scheme: the elastic offset of the stick spring,

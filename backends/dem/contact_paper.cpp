@@ -103,14 +103,21 @@ void ContactSet::evaluate_paper(std::vector<Block>& blocks, double dt, long begi
                     Projection moved = frame.valid ? frame.project(pr.point + fs / ks_a) : project(tq, pr.point + fs / ks_a, pr.xi);
                     anchor.face = face;
                     anchor.xi0 = moved.xi;
-                    // friction work: the force at the cap times the distance the anchor slipped
-                    tot.dissipated += fs.norm() * (moved.point - x0_old).norm();
+                    // friction work over the step: the leapfrog step does the work of a force
+                    // by the trapezoid rule (the mean of its values at both ends times the
+                    // step's displacement), which for the spring is ½ks·A·(u_old + u_new)·Δ;
+                    // less the change of its energy, that leaves ½ks·A·(u_old + u_new)·slip
+                    const Vec3 u_new = -fs / ks_a;
+                    const Vec3 u_old = anchor.u - anchor.u.dot(n) * n;
+                    tot.dissipated += 0.5 * ks_a * (u_old + u_new).dot(u - u_new);
+                    anchor.u = u_new;
                     anchor.energy = 0.5 * fs.squaredNorm() / ks_a;
                 } else {
                     // stick: spring plus shear dashpot, the dashpot trimmed so the sum stays ≤ μ·Fn
                     fs = f_el - ct_area * a * vt_rel;
                     if (fs.norm() > cap) fs *= cap / fs.norm();
                     anchor.energy = 0.5 * u.squaredNorm() * ks_a;
+                    anchor.u = u;
                     tot.dissipated -= (fs - f_el).dot(vt_rel) * dt;
                 }
                 tot.stored += anchor.energy;

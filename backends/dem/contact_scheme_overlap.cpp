@@ -136,7 +136,12 @@ void ContactSet::evaluate_overlap(std::vector<Block>& blocks, double dt, long be
                                 // the spring's stiffness ks·A follows the contact area; the offset
                                 // is scaled so that a change of area neither makes nor takes spring
                                 // energy (½ks·A·u² kept: u scaled by √(A_old/A))
-                                if (!lay && anchor->area > 0.0) u_t *= std::sqrt(anchor->area / in.area);
+                                Vec3 u_old = anchor->u - anchor->u.dot(nt) * nt;
+                                if (!lay && anchor->area > 0.0) {
+                                    const double scale = std::sqrt(anchor->area / in.area);
+                                    u_t *= scale;
+                                    u_old *= scale;
+                                }
                                 anchor->area = in.area;
                                 const double ks_a = law_.ks * in.area;
                                 const Vec3 f_el = -ks_a * u_t;
@@ -145,7 +150,9 @@ void ContactSet::evaluate_overlap(std::vector<Block>& blocks, double dt, long be
                                     // slip: the spring is capped at μ·Fn, the offset shrinks to match
                                     fs = cap * f_el / f_el.norm();
                                     const Vec3 u_new = -fs / ks_a;
-                                    tot.dissipated += fs.norm() * (u_t - u_new).norm();
+                                    // friction work over the step (the leapfrog step does a
+                                    // force's work by the trapezoid rule): ½ks·A·(u_old + u_new)·slip
+                                    tot.dissipated += 0.5 * ks_a * (u_old + u_new).dot(u_t - u_new);
                                     anchor->u = u_new;
                                     anchor->energy = 0.5 * fs.squaredNorm() / ks_a;
                                 } else {
