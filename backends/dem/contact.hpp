@@ -24,6 +24,8 @@ struct Anchor {
     Vec2 xi0 = Vec2::Zero();    ///< natural coordinates of the stick point on that face
     double energy = 0.0;        ///< shear-spring energy at the last evaluation, J (dissipated on reset)
     Vec3 u = Vec3::Zero();      ///< shear-spring offset at the last evaluation, world, m
+    double fd = 0.0;            ///< normal dashpot force at the last evaluation, N
+    Vec3 fds = Vec3::Zero();    ///< shear dashpot force at the last evaluation, world, N
 };
 
 /// Shear state of one sub-contact of the overlap scheme: the elastic offset of the stick spring,
@@ -35,6 +37,8 @@ struct SubAnchor {
     double energy = 0.0;        ///< shear-spring energy at the last evaluation, J (dissipated on reset)
     double area = 0.0;          ///< contact area at the last evaluation, m²
     bool seen = false;          ///< in contact at this evaluation
+    double fd = 0.0;            ///< normal dashpot force at the last evaluation, N
+    Vec3 fds = Vec3::Zero();    ///< shear dashpot force at the last evaluation, world, N
 };
 
 /// The force of one sub-contact, kept until it is spread to the nodes: both blocks take it at the

@@ -81,7 +81,13 @@ void ContactSet::evaluate_paper(std::vector<Block>& blocks, double dt, long begi
             // normal: penalty spring plus dashpot, never pulling
             const double fn_el = law_.kn * a * depth;
             double fn = std::max(0.0, fn_el + cn_area * a * closing);
-            tot.dissipated += (fn - fn_el) * closing * dt;
+            // the dashpot's work over the step as the leapfrog step does it: the mean of its
+            // forces at both ends times the step's closing (booking the end force alone is
+            // first order in dt)
+            const double fd = fn - fn_el, fd_old = anchor.fd;
+            const Vec3 fds_old = anchor.fds;
+            Vec3 fds = Vec3::Zero();
+            tot.dissipated += 0.5 * (fd_old + fd) * closing * dt;
             tot.stored += 0.5 * fn_el * depth;
             // shear: elastic from the stick anchor, capped at μ·Fn
             Vec3 fs = Vec3::Zero();
@@ -118,12 +124,15 @@ void ContactSet::evaluate_paper(std::vector<Block>& blocks, double dt, long begi
                     if (fs.norm() > cap) fs *= cap / fs.norm();
                     anchor.energy = 0.5 * u.squaredNorm() * ks_a;
                     anchor.u = u;
-                    tot.dissipated -= (fs - f_el).dot(vt_rel) * dt;
+                    fds = fs - f_el;
+                    tot.dissipated -= 0.5 * (fds_old + fds).dot(vt_rel) * dt;
                 }
                 tot.stored += anchor.energy;
             } else {
                 reset(anchor);
             }
+            anchor.fd = fd;
+            anchor.fds = fds;
             if (keep_forces) {
                 c.forces.push_back({int(k), face, pr.xi, fn * n + fs});
             } else {

@@ -122,7 +122,12 @@ void ContactSet::evaluate_overlap(std::vector<Block>& blocks, double dt, long be
                             // normal: the exact integral of kn·d, plus the dashpot, never pulling
                             const double fn_el = law_.kn * in.d1;
                             const double fn = std::max(0.0, fn_el + cn_area * in.area * closing);
-                            tot.dissipated += (fn - fn_el) * closing * dt;
+                            // the dashpot's work as the leapfrog step does it: the mean of
+                            // its forces at both ends of the step times the step's closing
+                            const double fd = fn - fn_el;
+                            Vec3 fds = Vec3::Zero();
+                            tot.dissipated += 0.5 * (anchor->fd + fd) * closing * dt;
+                            anchor->fd = fd;
                             tot.stored += 0.5 * law_.kn * in.d2;
                             Vec3 fs = Vec3::Zero();
                             if (law_.ks > 0.0 && fn > 0.0) {
@@ -161,7 +166,8 @@ void ContactSet::evaluate_overlap(std::vector<Block>& blocks, double dt, long be
                                     if (fs.norm() > cap) fs *= cap / fs.norm();
                                     anchor->u = u_t;
                                     anchor->energy = 0.5 * ks_a * u_t.squaredNorm();
-                                    tot.dissipated -= (fs - f_el).dot(vt_rel) * dt;
+                                    fds = fs - f_el;
+                                    tot.dissipated -= 0.5 * (anchor->fds + fds).dot(vt_rel) * dt;
                                 }
                                 tot.stored += anchor->energy;
                             } else {
@@ -170,6 +176,7 @@ void ContactSet::evaluate_overlap(std::vector<Block>& blocks, double dt, long be
                                 anchor->energy = -1.0;
                                 anchor->area = 0.0;
                             }
+                            anchor->fds = fds;
                             const Vec3 force = fn * nt + fs;
                             if (keep_forces) {
                                 c.sub_forces.push_back({wh, wt, force});
