@@ -37,6 +37,10 @@ double Block::motion_since_refresh() const {
     return (body.x - x_at_refresh).norm() + r_max * rotation_vector(dq).norm();
 }
 
+double Block::turn_since_refresh() const {
+    return rotation_vector(body.q * q_at_refresh.conjugate()).norm();
+}
+
 Aabb Block::bounds() const {
     Aabb b;
     for (const auto& p : x) b.add(p);

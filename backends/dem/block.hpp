@@ -57,6 +57,8 @@ struct Block {
     void update_nodes();
     /// bound on how far any point moved since the last refresh, m
     double motion_since_refresh() const;
+    /// angle the block's frame turned through since the last refresh, rad
+    double turn_since_refresh() const;
     /// axis-aligned bounds of the nodes
     Aabb bounds() const;
 };

@@ -6,6 +6,7 @@
 #include <tuple>
 
 #include "broad_phase.hpp"
+#include "contact_reach.hpp"
 
 #ifdef _OPENMP
 #include <omp.h>
@@ -33,6 +34,13 @@ void ContactSet::refresh(std::vector<Block>& blocks) {
         blocks[i].q_at_refresh = blocks[i].body.q;
     }
     broad_.overlapping_pairs(boxes_, pairs_);
+    // overlap scheme: faces that cannot reach the target before the next refresh are left out
+    const bool prune = prune_ && law_.scheme == ContactScheme::overlap;
+    if (prune) {
+        frames_.resize(blocks.size());
+        for (size_t i = 0; i < blocks.size(); ++i) frames_[i] = SideFrames::of(blocks[i]);
+    }
+    PairGeometry g;
     for (auto [i, j] : pairs_) {
         if (blocks[i].fixed && blocks[j].fixed) continue;
         for (auto [h, t] : {std::pair<int, int>{i, j}, std::pair<int, int>{j, i}}) {
@@ -41,6 +49,7 @@ void ContactSet::refresh(std::vector<Block>& blocks) {
                 for (int n : blocks[h].mesh.faces[f]) fb.add(blocks[h].x[n]);
                 fb.inflate(0.5 * margin_);
                 if (!fb.overlaps(boxes_[t])) continue;
+                if (prune && !may_act(blocks, frames_, h, f, t, margin_, g)) continue;
                 Candidate c;
                 c.hit_block = h;
                 c.hit_face = f;

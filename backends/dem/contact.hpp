@@ -23,6 +23,9 @@ struct Anchor {
     int face = -1;              ///< target boundary face the stick point lies on
     Vec2 xi0 = Vec2::Zero();    ///< natural coordinates of the stick point on that face
     double energy = 0.0;        ///< shear-spring energy at the last evaluation, J (dissipated on reset)
+    Vec3 u = Vec3::Zero();      ///< shear-spring offset at the last evaluation, world, m
+    double fd = 0.0;            ///< normal dashpot force at the last evaluation, N
+    Vec3 fds = Vec3::Zero();    ///< shear dashpot force at the last evaluation, world, N
 };
 
 /// Shear state of one sub-contact of the overlap scheme: the elastic offset of the stick spring,
@@ -34,6 +37,8 @@ struct SubAnchor {
     double energy = 0.0;        ///< shear-spring energy at the last evaluation, J (dissipated on reset)
     double area = 0.0;          ///< contact area at the last evaluation, m²
     bool seen = false;          ///< in contact at this evaluation
+    double fd = 0.0;            ///< normal dashpot force at the last evaluation, N
+    Vec3 fds = Vec3::Zero();    ///< shear dashpot force at the last evaluation, world, N
 };
 
 /// The force of one sub-contact, kept until it is spread to the nodes: both blocks take it at the
@@ -90,6 +95,9 @@ public:
     double margin() const { return margin_; }
     /// keep every point's force in its candidate (Candidate::forces) also on one thread, for output
     void keep_forces(bool keep) { keep_forces_ = keep; }
+    /// overlap scheme: leave out at each refresh the faces that cannot reach their target before
+    /// the next (on by default; off: every face whose box meets the target's, for comparison)
+    void prune(bool on) { prune_ = on; }
 
 private:
     /// candidates [begin, end): forces (kept in the candidate, or spread at once), anchors, totals
@@ -102,6 +110,7 @@ private:
     ContactLaw law_;
     double margin_ = 0.0;
     bool keep_forces_ = false;
+    bool prune_ = true;
     std::vector<Candidate> candidates_;
     std::vector<SideFrames> frames_;   // every block's side frames of this step
     // buffers kept between refreshes so that a steady state allocates nothing

@@ -29,7 +29,9 @@ void clip(ClipPolygon& poly, const Affine& g) {
             out.p[out.n++] = poly.p[i] + s * (poly.p[j] - poly.p[i]);
         }
     }
-    poly = out;
+    // only the vertices in use (a whole polygon is 24 of them)
+    poly.n = out.n;
+    for (int i = 0; i < out.n; ++i) poly.p[i] = out.p[i];
 }
 
 OverlapIntegrals integrate_depth(const ClipPolygon& poly, const Vec3& c, const Vec3& n) {

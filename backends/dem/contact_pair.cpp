@@ -55,6 +55,27 @@ bool is_target_given(const std::vector<Block>& blocks, int h, int hit_side, int 
 
 }  // namespace
 
+bool may_be_target(const std::vector<Block>& blocks, int h, int hit_side, int t, int target_side, const Vec3& nh,
+                   const Vec3& nt, double turn) {
+    double ah = blocks[h].side_area[hit_side], at = blocks[t].side_area[target_side];
+    double tol = 1e-9 * std::max(ah, at);
+    double vt = blocks[t].volume, vh = blocks[h].volume;
+    const bool by_geometry = std::abs(at - ah) <= tol && blocks[t].fixed == blocks[h].fixed &&
+                             std::abs(vt - vh) <= 1e-9 * std::max(vt, vh);
+    const bool rule = is_target_given(blocks, h, hit_side, t, target_side, nh, nt);
+    if (rule || !by_geometry) return rule;   // areas, fixed and volumes do not change
+    // the geometric rule said no: it holds as long as each component of m = n_t − n_h (each
+    // moves by at most `turn`, half its length by turn/2) stays clear of the thresholds it met
+    const Vec3 m = nt - nh;
+    const double half = 0.5 * m.norm(), d = 2.0 * turn;
+    for (int axis : {2, 0, 1}) {
+        const double a = std::abs(m[axis]);
+        if (a >= half) return !(a - half > d && m[axis] < -d);   // the deciding axis: clear of half and of 0
+        if (a > half - d) return true;                            // might become the deciding axis
+    }
+    return true;
+}
+
 bool is_target(const std::vector<Block>& blocks, int h, int hit_side, int t, int target_side) {
     return is_target_given(blocks, h, hit_side, t, target_side,
                            quad_normal(blocks[h].side_quad(hit_side), Vec2::Zero()),
@@ -71,33 +92,43 @@ SideFrames SideFrames::of(const Block& b) {
     return f;
 }
 
-void PairGeometry::set(const std::vector<Block>& blocks, const std::vector<SideFrames>& frames, int h, int t) {
+void PairGeometry::set(const std::vector<Block>& blocks, const std::vector<SideFrames>& frames, int h, int t, bool paper) {
     hit = h;
     target = t;
+    blocks_ = &blocks;
+    hit_normal_ = &frames[h].normal;
+    faces_done_.fill(0);
     const Block& tb = blocks[t];
     normal = frames[t].normal;
     centre = frames[t].centre;
-    const std::array<Vec3, 6>& hn = frames[h].normal;
-    for (int s = 0; s < 6; ++s) {
-        std::array<double, 6> d;
-        double best = 0.0;
-        best_side[s] = -1;
-        for (int f = 0; f < 6; ++f) {
-            d[size_t(f)] = hn[f].dot(normal[s]);
-            if (d[size_t(f)] < best) best = d[size_t(f)], best_side[s] = f;
+    if (paper) {
+        const std::array<Vec3, 6>& hn = frames[h].normal;
+        for (int s = 0; s < 6; ++s) {
+            double best = 0.0;
+            best_side[s] = -1;
+            for (int f = 0; f < 6; ++f) {
+                const double d = hn[f].dot(normal[s]);
+                if (d < best) best = d, best_side[s] = f;
+            }
+            target_ok[s] = best_side[s] >= 0 && is_target_given(blocks, h, best_side[s], t, s, hn[best_side[s]], normal[s]);
         }
-        target_ok[s] = best_side[s] >= 0 && is_target_given(blocks, h, best_side[s], t, s, hn[best_side[s]], normal[s]);
-        // a side within 1e-3 rad of perpendicular casts a shadow under 1e-3 of its height: left
-        // out, so that rounding never makes a side standing on the target a hitting side (the
-        // best side's rule is the one just found)
-        for (int f = 0; f < 6; ++f)
-            faces[f][s] = d[size_t(f)] < -1e-3 &&
-                          (f == best_side[s] ? bool(target_ok[s]) : is_target_given(blocks, h, f, t, s, hn[f], normal[s]));
     }
     // a hitting point up to 1e-4 of the edge outside a side plane still counts as over the
     // target side: flush edges (stacked blocks) stay in contact as they bulge
     flush_tol = 1e-4 * tb.min_edge;
     closer_tol = 0.25 * tb.min_edge;
+}
+
+const std::array<char, 6>& PairGeometry::faces(int f) {
+    auto& row = faces_[size_t(f)];
+    if (faces_done_[size_t(f)]) return row;
+    faces_done_[size_t(f)] = 1;
+    const Vec3& nh = (*hit_normal_)[size_t(f)];
+    // a side within 1e-3 rad of perpendicular casts a shadow under 1e-3 of its height: left out,
+    // so that rounding never makes a side standing on the target a hitting side
+    for (int s = 0; s < 6; ++s)
+        row[size_t(s)] = nh.dot(normal[s]) < -1e-3 && is_target_given(*blocks_, hit, f, target, s, nh, normal[s]);
+    return row;
 }
 
 std::array<double, 2> dashpot_per_area(const ContactLaw& law, const Block& hb, const Block& tb, int hit_side) {

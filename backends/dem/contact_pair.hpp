@@ -22,37 +22,46 @@ struct SideFrames {
 struct PairGeometry {
     std::array<Vec3, 6> normal;      ///< target sides' outward unit normals
     std::array<Vec3, 6> centre;      ///< target sides' centres, m
-    std::array<int, 6> best_side{};  ///< per target side: the hitting block's side most opposed to it (-1: none)
-    std::array<char, 6> target_ok{}; ///< per target side: it is the target of that hitting side
-    /// overlap scheme, [hitting side][target side]: the sides face each other (normals opposed)
-    /// and the target side is the target; every side of the hitting block's lower surface seen
-    /// from a target side hits it, so their shadows tile the overlap without gap or double count
-    std::array<std::array<char, 6>, 6> faces{};
+    std::array<int, 6> best_side{};  ///< paper scheme, per target side: the hitting block's side most opposed to it (-1: none)
+    std::array<char, 6> target_ok{}; ///< paper scheme, per target side: it is the target of that hitting side
     double flush_tol = 0.0;          ///< a point this far outside a side plane is still over the side, m
     double closer_tol = 0.0;         ///< another side this much closer: the point enters through it, m
     int hit = -1, target = -1;       ///< the pair it was set for (-1: none yet)
-    /// the geometry of the pair (h hits t) from every block's side frames of this step
-    void set(const std::vector<Block>& blocks, const std::vector<SideFrames>& frames, int h, int t);
+    /// the geometry of the pair (h hits t) from every block's side frames of this step; `paper`:
+    /// also the paper scheme's best sides
+    void set(const std::vector<Block>& blocks, const std::vector<SideFrames>& frames, int h, int t, bool paper);
     /// set it for the pair unless already set for it (candidates of one pair come in a row);
     /// true when it changed
-    bool update(const std::vector<Block>& blocks, const std::vector<SideFrames>& frames, int h, int t) {
+    bool update(const std::vector<Block>& blocks, const std::vector<SideFrames>& frames, int h, int t,
+                bool paper = false) {
         if (h == hit && t == target) return false;
-        set(blocks, frames, h, t);
+        set(blocks, frames, h, t, paper);
         return true;
     }
-    /// true when side `hit_side` of the hitting block hits some side of the target
+    /// true when side `hit_side` of the hitting block hits some side of the target (paper scheme)
     bool acts(int hit_side) const {
         for (int s = 0; s < 6; ++s)
             if (best_side[s] == hit_side && target_ok[s]) return true;
         return false;
     }
-    /// overlap scheme: true when side `hit_side` of the hitting block faces some target side
-    bool faces_any(int hit_side) const {
-        for (int s = 0; s < 6; ++s)
-            if (faces[hit_side][s]) return true;
-        return false;
-    }
+    /// overlap scheme, per target side: side `hit_side` of the hitting block faces it (normals
+    /// opposed) and it is the target; every side of the hitting block's lower surface seen from a
+    /// target side hits it, so their shadows tile the overlap without gap or double count.
+    /// Worked out on first use for each hitting side
+    const std::array<char, 6>& faces(int hit_side);
+
+private:
+    const std::vector<Block>* blocks_ = nullptr;
+    const std::array<Vec3, 6>* hit_normal_ = nullptr;   // the hitting block's side normals
+    std::array<std::array<char, 6>, 6> faces_{};
+    std::array<char, 6> faces_done_{};
 };
+
+/// the refresh's bound on the target rule (docs/dem.md): false only when side `target_side` of
+/// block t is not the target of side `hit_side` of block h for any outward normals within `turn`
+/// (rad, small) of nh and nt (the rule's geometric tie-break is the only part that can change)
+bool may_be_target(const std::vector<Block>& blocks, int h, int hit_side, int t, int target_side, const Vec3& nh,
+                   const Vec3& nt, double turn);
 
 /// damping coefficients per unit contact area (N·s/m³) of the normal and the shear dashpots
 std::array<double, 2> dashpot_per_area(const ContactLaw& law, const Block& hb, const Block& tb, int hit_side);

@@ -21,7 +21,7 @@ void ContactSet::evaluate_paper(std::vector<Block>& blocks, double dt, long begi
             tot.dissipated += a.energy;
             a = Anchor{};
         };
-        if (g.update(blocks, frames_, c.hit_block, c.target_block)) {
+        if (g.update(blocks, frames_, c.hit_block, c.target_block, true)) {
             for (int s = 0; s < 6; ++s)
                 frames[s] = tb.mesh.side_grid[s].size() == 1 ? ParallelogramFrame::of(tb.side_quad(s)) : ParallelogramFrame{};
         }
@@ -81,7 +81,13 @@ void ContactSet::evaluate_paper(std::vector<Block>& blocks, double dt, long begi
             // normal: penalty spring plus dashpot, never pulling
             const double fn_el = law_.kn * a * depth;
             double fn = std::max(0.0, fn_el + cn_area * a * closing);
-            tot.dissipated += (fn - fn_el) * closing * dt;
+            // the dashpot's work over the step as the leapfrog step does it: the mean of its
+            // forces at both ends times the step's closing (booking the end force alone is
+            // first order in dt)
+            const double fd = fn - fn_el, fd_old = anchor.fd;
+            const Vec3 fds_old = anchor.fds;
+            Vec3 fds = Vec3::Zero();
+            tot.dissipated += 0.5 * (fd_old + fd) * closing * dt;
             tot.stored += 0.5 * fn_el * depth;
             // shear: elastic from the stick anchor, capped at μ·Fn
             Vec3 fs = Vec3::Zero();
@@ -103,20 +109,30 @@ void ContactSet::evaluate_paper(std::vector<Block>& blocks, double dt, long begi
                     Projection moved = frame.valid ? frame.project(pr.point + fs / ks_a) : project(tq, pr.point + fs / ks_a, pr.xi);
                     anchor.face = face;
                     anchor.xi0 = moved.xi;
-                    // friction work: the force at the cap times the distance the anchor slipped
-                    tot.dissipated += fs.norm() * (moved.point - x0_old).norm();
+                    // friction work over the step: the leapfrog step does the work of a force
+                    // by the trapezoid rule (the mean of its values at both ends times the
+                    // step's displacement), which for the spring is ½ks·A·(u_old + u_new)·Δ;
+                    // less the change of its energy, that leaves ½ks·A·(u_old + u_new)·slip
+                    const Vec3 u_new = -fs / ks_a;
+                    const Vec3 u_old = anchor.u - anchor.u.dot(n) * n;
+                    tot.dissipated += 0.5 * ks_a * (u_old + u_new).dot(u - u_new);
+                    anchor.u = u_new;
                     anchor.energy = 0.5 * fs.squaredNorm() / ks_a;
                 } else {
                     // stick: spring plus shear dashpot, the dashpot trimmed so the sum stays ≤ μ·Fn
                     fs = f_el - ct_area * a * vt_rel;
                     if (fs.norm() > cap) fs *= cap / fs.norm();
                     anchor.energy = 0.5 * u.squaredNorm() * ks_a;
-                    tot.dissipated -= (fs - f_el).dot(vt_rel) * dt;
+                    anchor.u = u;
+                    fds = fs - f_el;
+                    tot.dissipated -= 0.5 * (fds_old + fds).dot(vt_rel) * dt;
                 }
                 tot.stored += anchor.energy;
             } else {
                 reset(anchor);
             }
+            anchor.fd = fd;
+            anchor.fds = fds;
             if (keep_forces) {
                 c.forces.push_back({int(k), face, pr.xi, fn * n + fs});
             } else {

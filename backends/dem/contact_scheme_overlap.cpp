@@ -6,38 +6,14 @@
 
 #include "contact.hpp"
 #include "contact_overlap.hpp"
+#include "contact_reach.hpp"
 
 namespace cairn::dem {
 
 namespace {
 
 constexpr int kMaxSubdivision = 16;   // the scene reader's bound on contact.subdivision
-constexpr int kMaxConstraints = 16;   // depth, 4 face edges, and per other side: flush and entering
-
-// the affine constraints of a target side s that do not depend on the target face: the point is
-// behind every other side plane (flush within flush_tol) and is not entering through another
-// side o. Where the hitting side faces o (normals opposed, whichever of the two hits), a point
-// nearer to o than to s entered through o: it acts there (the hitting side hits o, the region is
-// shared along the bisector) or not at all. With a tolerance there the depth behind s was
-// measured past the side the point entered through: next to a joint between two voussoirs
-// (sides meeting at 3.6°) the adjacent joint face was pushed along the intrados normal with 16×
-// its penetration. Where the hitting side runs across o (a face flush with the edge of a face
-// below it) the paper's quarter-edge tolerance stays: a point near the edge came through s, and
-// without it a strip of width d along the edge would drop in and out as d changes
-int side_constraints(const PairGeometry& g, int s, const Vec3& hit_normal, std::array<Affine, kMaxConstraints>& out) {
-    int k = 0;
-    const Vec3& ns = g.normal[s];
-    const double cs = ns.dot(g.centre[s]);
-    for (int o = 0; o < 6; ++o) {
-        if (o == s) continue;
-        const Vec3& no = g.normal[o];
-        const double co = no.dot(g.centre[o]);
-        out[k++] = Affine{-no, co + g.flush_tol};
-        const bool facing = hit_normal.dot(no) < -1e-3;
-        out[k++] = Affine{ns - no, co - cs + (facing ? 0.0 : g.closer_tol)};
-    }
-    return k;
-}
+constexpr int kMaxConstraints = kMaxSideConstraints;
 
 }  // namespace
 
@@ -54,7 +30,8 @@ void ContactSet::evaluate_overlap(std::vector<Block>& blocks, double dt, long be
         for (auto& a : c.subs) a.seen = false;
         g.update(blocks, frames_, c.hit_block, c.target_block);
         const int hit_side = hb.mesh.face_side[c.hit_face];
-        if (g.faces_any(hit_side)) {
+        const std::array<char, 6>& faces = g.faces(hit_side);
+        if (faces[0] || faces[1] || faces[2] || faces[3] || faces[4] || faces[5]) {
             const Quad hq = hb.face_quad(c.hit_face);
             Aabb hbox;
             for (int j = 0; j <= n; ++j)
@@ -62,7 +39,7 @@ void ContactSet::evaluate_overlap(std::vector<Block>& blocks, double dt, long be
             const auto [cn_area, ct_area] = dashpot_per_area(law_, hb, tb, hit_side);
             bool ready = false;   // the box: laid at the first side not missed
             for (int s = 0; s < 6; ++s) {
-                if (!g.faces[hit_side][s]) continue;
+                if (!faces[size_t(s)]) continue;
                 // the face lies in the hull of its corners: a constraint none of them meets rules
                 // out every sub-cell at once (most candidate faces stop here), the side's own
                 // constraints first, then each target face's
@@ -74,7 +51,7 @@ void ContactSet::evaluate_overlap(std::vector<Block>& blocks, double dt, long be
                     }
                     return false;
                 };
-                const int side_count = side_constraints(g, s, frames_[size_t(c.hit_block)].normal[size_t(hit_side)], cons);
+                const int side_count = side_constraints(g, s, frames_[size_t(c.hit_block)].normal[size_t(hit_side)], false, cons);
                 if (missed_by(cons.data(), cons.data() + side_count)) continue;
                 if (!ready) {
                     ready = true;
@@ -114,7 +91,16 @@ void ContactSet::evaluate_overlap(std::vector<Block>& blocks, double dt, long be
                             const OverlapIntegrals in = integrate_depth(poly, ct, nt);
                             if (!(in.d1 > 0.0) || !(in.area > 0.0)) continue;
                             double dmax = 0.0;
-                            for (int i = 0; i < poly.n; ++i) dmax = std::max(dmax, nt.dot(ct - poly.p[i]));
+                            // how deep a point is in the target: its distance to the nearest
+                            // side (a sliver of a face crossing a side nearly square to it may lie
+                            // up to the closer tolerance behind that side, yet just under the one
+                            // it entered through)
+                            for (int i = 0; i < poly.n; ++i) {
+                                double d = nt.dot(ct - poly.p[i]);
+                                for (int o = 0; o < 6; ++o)
+                                    if (o != s) d = std::min(d, g.normal[o].dot(g.centre[o] - poly.p[i]));
+                                dmax = std::max(dmax, d);
+                            }
                             const double depth_ratio = dmax / std::min(hb.min_edge, tb.min_edge);
                             if (depth_ratio > tot.worst_depth) tot.worst_depth = depth_ratio, tot.worst_hit = c.hit_block, tot.worst_target = c.target_block;
                             // the sub-contact's anchor, found or new
@@ -136,7 +122,12 @@ void ContactSet::evaluate_overlap(std::vector<Block>& blocks, double dt, long be
                             // normal: the exact integral of kn·d, plus the dashpot, never pulling
                             const double fn_el = law_.kn * in.d1;
                             const double fn = std::max(0.0, fn_el + cn_area * in.area * closing);
-                            tot.dissipated += (fn - fn_el) * closing * dt;
+                            // the dashpot's work as the leapfrog step does it: the mean of
+                            // its forces at both ends of the step times the step's closing
+                            const double fd = fn - fn_el;
+                            Vec3 fds = Vec3::Zero();
+                            tot.dissipated += 0.5 * (anchor->fd + fd) * closing * dt;
+                            anchor->fd = fd;
                             tot.stored += 0.5 * law_.kn * in.d2;
                             Vec3 fs = Vec3::Zero();
                             if (law_.ks > 0.0 && fn > 0.0) {
@@ -150,7 +141,12 @@ void ContactSet::evaluate_overlap(std::vector<Block>& blocks, double dt, long be
                                 // the spring's stiffness ks·A follows the contact area; the offset
                                 // is scaled so that a change of area neither makes nor takes spring
                                 // energy (½ks·A·u² kept: u scaled by √(A_old/A))
-                                if (!lay && anchor->area > 0.0) u_t *= std::sqrt(anchor->area / in.area);
+                                Vec3 u_old = anchor->u - anchor->u.dot(nt) * nt;
+                                if (!lay && anchor->area > 0.0) {
+                                    const double scale = std::sqrt(anchor->area / in.area);
+                                    u_t *= scale;
+                                    u_old *= scale;
+                                }
                                 anchor->area = in.area;
                                 const double ks_a = law_.ks * in.area;
                                 const Vec3 f_el = -ks_a * u_t;
@@ -159,7 +155,9 @@ void ContactSet::evaluate_overlap(std::vector<Block>& blocks, double dt, long be
                                     // slip: the spring is capped at μ·Fn, the offset shrinks to match
                                     fs = cap * f_el / f_el.norm();
                                     const Vec3 u_new = -fs / ks_a;
-                                    tot.dissipated += fs.norm() * (u_t - u_new).norm();
+                                    // friction work over the step (the leapfrog step does a
+                                    // force's work by the trapezoid rule): ½ks·A·(u_old + u_new)·slip
+                                    tot.dissipated += 0.5 * ks_a * (u_old + u_new).dot(u_t - u_new);
                                     anchor->u = u_new;
                                     anchor->energy = 0.5 * fs.squaredNorm() / ks_a;
                                 } else {
@@ -168,7 +166,8 @@ void ContactSet::evaluate_overlap(std::vector<Block>& blocks, double dt, long be
                                     if (fs.norm() > cap) fs *= cap / fs.norm();
                                     anchor->u = u_t;
                                     anchor->energy = 0.5 * ks_a * u_t.squaredNorm();
-                                    tot.dissipated -= (fs - f_el).dot(vt_rel) * dt;
+                                    fds = fs - f_el;
+                                    tot.dissipated -= 0.5 * (anchor->fds + fds).dot(vt_rel) * dt;
                                 }
                                 tot.stored += anchor->energy;
                             } else {
@@ -177,6 +176,7 @@ void ContactSet::evaluate_overlap(std::vector<Block>& blocks, double dt, long be
                                 anchor->energy = -1.0;
                                 anchor->area = 0.0;
                             }
+                            anchor->fds = fds;
                             const Vec3 force = fn * nt + fs;
                             if (keep_forces) {
                                 c.sub_forces.push_back({wh, wt, force});

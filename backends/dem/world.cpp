@@ -4,6 +4,8 @@
 #include <cmath>
 #include <sstream>
 
+#include "contact_reach.hpp"
+
 namespace cairn::dem {
 
 namespace {
@@ -104,17 +106,21 @@ void World::refresh_if_due() {
             return v;
         };
         const long count = long(blocks_.size());
+        // overlap scheme: also before a block turns by kRefreshTurn (the refresh leaves out the
+        // sides that cannot face each other within that turn)
+        auto spin = [](const Block& b) { return b.deformable ? 0.0 : b.body.omega().norm(); };
         const double half = 0.5 * contacts_.margin();
-        bool early = false;
-#pragma omp parallel for schedule(static) reduction(|| : early) if (count >= kParallelBlocks)
+        const bool turns = prune_ && scene_.contact.scheme == ContactScheme::overlap;
+        bool early = false, turned = false;
+#pragma omp parallel for schedule(static) reduction(|| : early, turned) if (count >= kParallelBlocks)
         for (long i = 0; i < count; ++i) {
             const Block& b = blocks_[size_t(i)];
-            if (!b.fixed && b.motion_since_refresh() + speed(b) * dt_ > half) early = true;
+            if (b.fixed) continue;
+            if (b.motion_since_refresh() + speed(b) * dt_ > half) early = true;
+            if (turns && b.turn_since_refresh() + spin(b) * dt_ > kRefreshTurn) turned = true;
         }
-        if (early) {
-            due = true;
-            ++early_refreshes_;
-        }
+        if (early) ++early_refreshes_;   // counted: a margin too small for the motion
+        due = early || turned;
     }
     if (!due) return;
     contacts_.refresh(blocks_);

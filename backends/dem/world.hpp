@@ -47,6 +47,16 @@ public:
     int active_contacts() const { return active_; }
     /// keep per-point contact forces for contact_points(); call before start()
     void record_contacts(bool on) { contacts_.keep_forces(on); }
+    /// overlap scheme: leave out the faces that cannot reach their target before the next refresh,
+    /// refreshing also before a block turns by kRefreshTurn (default on; off: every face whose
+    /// box meets the target's, refreshed on motion alone), candidates rebuilt; call before start()
+    void prune_contacts(bool on) {
+        prune_ = on;
+        contacts_.prune(on);
+        contacts_.refresh(blocks_);
+    }
+    /// candidate hitting faces of the last refresh
+    size_t candidate_count() const { return contacts_.candidates().size(); }
     /// penetrating hitting points of the last force evaluation with their forces (empty unless
     /// record_contacts(true)); block_a is the hitting block, the normal that of the target face
     std::vector<ContactPoint> contact_points() const;
@@ -68,6 +78,7 @@ private:
     double t_ = 0.0;
     int steps_since_refresh_ = 0;
     int early_refreshes_ = 0;
+    bool prune_ = true;
     long long element_updates_ = 0;
     std::vector<Block> blocks_;
     ContactSet contacts_;

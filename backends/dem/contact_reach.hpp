@@ -1,0 +1,39 @@
+#pragma once
+/// The overlap scheme's constraints of a target side, and the refresh's test of which hitting
+/// faces can reach a target block before the next refresh (the others are never candidates).
+
+#include <array>
+#include <vector>
+
+#include "block.hpp"
+#include "contact_overlap.hpp"
+#include "contact_pair.hpp"
+
+namespace cairn::dem {
+
+/// overlap scheme: the contacts are refreshed before any block turns more than this (rad), so
+/// that a side square to another (within 1e-3 rad: never a hitting side) is left out at refresh
+constexpr double kRefreshTurn = 2e-4;
+
+/// most constraints of one target side: depth, 4 face edges, and per other side flush and entering
+constexpr int kMaxSideConstraints = 16;
+
+/// The affine constraints of target side s that do not depend on the target face (docs/dem.md,
+/// overlap scheme): behind every other side plane (flush within flush_tol) and not entering
+/// through another side. `hit_normal` is the hitting side's outward unit normal; `loose` gives
+/// every entering constraint the closer tolerance whatever the hitting normal (the refresh's
+/// bound over any orientation the blocks reach). Returns the count written to `out`.
+int side_constraints(const PairGeometry& g, int s, const Vec3& hit_normal, bool loose,
+                     std::array<Affine, kMaxSideConstraints>& out);
+
+/// true when hitting face f of block h may act on block t at some step before the next refresh,
+/// while no point of either block moves more than half of `margin` (m) nor turns more than
+/// kRefreshTurn: some target side faces the face's side within that turn, may be its target, and no constraint of
+/// that side (with the whole side's depth and edges when the side is one face) misses all four
+/// corners of the face by more than the constraint can change over the motion. `frames` are every
+/// block's side frames now; `g` is scratch for the pair. Whatever this rejects never carries force
+/// in the interval, so pruning it leaves every result unchanged.
+bool may_act(const std::vector<Block>& blocks, const std::vector<SideFrames>& frames, int h, int f, int t,
+             double margin, PairGeometry& g);
+
+}  // namespace cairn::dem
