@@ -218,9 +218,12 @@ Generated generate(const std::string& kind, const std::map<std::string, double>&
         if (a.pointed > 1.0) throw Error("--pointed must be at most 1 (centres a span beyond the axis)");
         if (a.pointed > 0.0 && a.angle < M_PI) throw Error("--pointed needs a full arch: --angle 180deg");
         add_arch(s, a);
-        s.description = "Arch of " + std::to_string(a.voussoirs) + " voussoirs on two fixed springers (cairn make arch)";
         std::ostringstream o;
         o.precision(10);
+        o << (a.pointed > 0.0 ? "Pointed" : a.angle < M_PI ? "Segmental" : "Semicircular") << " arch of " << a.voussoirs
+          << " voussoirs, t/R = " << a.thickness / a.radius << ", on two fixed springers (cairn make arch)";
+        s.description = o.str();
+        o.str("");
         if (a.pointed == 0.0) {
             // the middle of the crown's intrados, on the keystone (odd N) or left of the crown joint
             o << "[probes.crown]   # middle of the crown's intrados\nblock = \"V" << (a.voussoirs + 1) / 2

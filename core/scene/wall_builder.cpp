@@ -11,10 +11,11 @@ namespace cairn {
 
 namespace {
 
-// a piece of a course: from a to b along the wall (m, from its left end), in the front leaf
+// a piece of a course: from a to b along the wall in quarter bricks from its left end (every
+// joint and cut lies on that grid, so positions are exact multiples of it), in the front leaf
 // (−1), the back leaf (+1) or through the whole thickness (0)
 struct Piece {
-    double a = 0.0, b = 0.0;
+    int a = 0, b = 0;
     int leaf = 0;
 };
 
@@ -24,27 +25,29 @@ std::string text(double x) {
     return buf;
 }
 
-// the bricks of course c before any opening is cut
+// the bricks of course c before any opening is cut; a brick is 4 quarters long, 2 thick (English)
 std::vector<Piece> course_pieces(const WallSpec& wall, int c) {
-    const double l = wall.brick.x(), w = wall.brick.y(), length = l * wall.bricks;
+    const int n = wall.bricks, length = 4 * n;
     std::vector<Piece> out;
     if (wall.bond == WallBond::english) {
         if (c % 2 == 0) {
             // stretcher course: two leaves of whole bricks
             for (int leaf : {-1, 1})
-                for (int i = 0; i < wall.bricks; ++i) out.push_back({i * l, (i + 1) * l, leaf});
+                for (int i = 0; i < n; ++i) out.push_back({4 * i, 4 * i + 4, leaf});
         } else {
             // header course: end header, queen closer, 2·bricks − 3 headers, queen closer, end header
-            out.push_back({0.0, w, 0});
-            out.push_back({w, 1.5 * w, 0});
-            for (int i = 0; i < 2 * wall.bricks - 3; ++i) out.push_back({(1.5 + i) * w, (2.5 + i) * w, 0});
-            out.push_back({length - 1.5 * w, length - w, 0});
-            out.push_back({length - w, length, 0});
+            out.push_back({0, 2, 0});
+            out.push_back({2, 3, 0});
+            for (int i = 0; i < 2 * n - 3; ++i) out.push_back({3 + 2 * i, 5 + 2 * i, 0});
+            out.push_back({length - 3, length - 2, 0});
+            out.push_back({length - 2, length, 0});
         }
         return out;
     }
-    double x = c % 2 == 1 && !wall.half_bricks ? 0.5 * l : 0.0;
-    for (double len : wall_course(wall, c)) {
+    int x = c % 2 == 1 && !wall.half_bricks ? 2 : 0;
+    const bool halves = c % 2 == 1 && wall.half_bricks;
+    for (int i = 0; i < n + (halves ? 1 : 0); ++i) {
+        const int len = halves && (i == 0 || i == n) ? 2 : 4;
         out.push_back({x, x + len, 0});
         x += len;
     }
@@ -52,15 +55,15 @@ std::vector<Piece> course_pieces(const WallSpec& wall, int c) {
 }
 
 // `pieces` without the interval [a, b]
-std::vector<Piece> cut(const std::vector<Piece>& pieces, double a, double b, double tiny) {
+std::vector<Piece> cut(const std::vector<Piece>& pieces, int a, int b) {
     std::vector<Piece> out;
     for (const Piece& p : pieces) {
-        if (p.b <= a + tiny || p.a >= b - tiny) {
+        if (p.b <= a || p.a >= b) {
             out.push_back(p);
             continue;
         }
-        if (a - p.a > tiny) out.push_back({p.a, a, p.leaf});
-        if (p.b - b > tiny) out.push_back({b, p.b, p.leaf});
+        if (p.a < a) out.push_back({p.a, a, p.leaf});
+        if (p.b > b) out.push_back({b, p.b, p.leaf});
     }
     return out;
 }
@@ -132,6 +135,8 @@ int add_wall(Scene& scene, const WallSpec& wall) {
     const std::vector<WallHole> holes = wall_holes(wall);
     if (wall.base) add_box(scene, "base", Vec3(length + 1.0, thick + 0.8, 0.5), Vec3(0, 0, -0.25), true);
     const int first = int(scene.blocks.size());
+    const double q = 0.25 * l;   // a quarter brick, m
+    auto quarters = [&](double x) { return int(std::lround(x / q)); };
     double z = 0.0;
     char name[48];
     for (int c = 0; c < wall.courses; ++c) {
@@ -141,10 +146,12 @@ int add_wall(Scene& scene, const WallSpec& wall) {
         std::vector<std::pair<int, Piece>> lintels;
         for (size_t k = 0; k < holes.size(); ++k) {
             const WallHole& o = holes[k];
-            if (c >= o.course_from && c < o.course_to) pieces = cut(pieces, o.x0, o.x1, tiny);
+            const int a = quarters(o.x0), b = quarters(o.x1);
+            if (c >= o.course_from && c < o.course_to) pieces = cut(pieces, a, b);
             if (c == o.course_to) {
-                pieces = cut(pieces, o.x0 - 0.5 * l, o.x1 + 0.5 * l, tiny);
-                lintels.push_back({int(k), {o.x0 - 0.5 * l, o.x1 + 0.5 * l, 0}});
+                // half a brick of bearing on each side
+                pieces = cut(pieces, a - 2, b + 2);
+                lintels.push_back({int(k), {a - 2, b + 2, 0}});
             }
         }
         // front leaf, then through-pieces, then the back leaf, each left to right
@@ -153,7 +160,8 @@ int add_wall(Scene& scene, const WallSpec& wall) {
         });
         auto place = [&](const std::string& n, const Piece& p) {
             const double t = p.leaf == 0 ? thick : 0.5 * thick;
-            add_box(scene, n, Vec3(p.b - p.a, t, h), Vec3(-0.5 * length + 0.5 * (p.a + p.b), 0.25 * thick * p.leaf, z + 0.5 * h),
+            const double x = 0.5 * q * (p.a + p.b - 4 * wall.bricks);
+            add_box(scene, n, Vec3(q * (p.b - p.a), t, h), Vec3(x, 0.25 * thick * p.leaf, z + 0.5 * h),
                     !wall.base && c == 0);
         };
         for (size_t i = 0; i < pieces.size(); ++i) {
