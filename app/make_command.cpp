@@ -69,7 +69,11 @@ const std::map<std::string, std::vector<Param>>& generator_params() {
           {"width", "10", Unit::count, "outer width along y, in brick lengths"},
           {"courses", "40", Unit::count, "courses"},
           {"brick-length", "0.24m", Unit::length, "brick length; the walls are half of it thick"},
-          {"brick-height", "0.07m", Unit::length, "brick height"}}},
+          {"brick-height", "0.07m", Unit::length, "brick height"},
+          {"opening", "", Unit::openings,
+           "a hole wall,x0,z0,width,height: wall 0 front (-y), 1 right, 2 back, 3 left; m along the wall from its "
+           "-x or -y end and from the base; sides rounded to half bricks, heights to courses; a lintel over it; "
+           "repeatable"}}},
         {"house",
          {{"length", "16", Unit::count, "outer length along x, in brick lengths"},
           {"width", "12", Unit::count, "outer width along y, in brick lengths"},
@@ -80,7 +84,11 @@ const std::map<std::string, std::vector<Param>>& generator_params() {
           {"door-height", "2m", Unit::length, "door height, rounded to whole courses"},
           {"window-width", "0.72m", Unit::length, "window centred in each other wall"},
           {"window-sill", "0.9m", Unit::length, "sill height, rounded to whole courses"},
-          {"window-height", "1m", Unit::length, "window height, rounded to whole courses"}}},
+          {"window-height", "1m", Unit::length, "window height, rounded to whole courses"},
+          {"opening", "", Unit::openings,
+           "another hole wall,x0,z0,width,height: wall 0 front (-y), 1 right, 2 back, 3 left; m along the wall from its "
+           "-x or -y end and from the base; sides rounded to half bricks, heights to courses; a lintel over it; "
+           "repeatable"}}},
     };
     return params;
 }
@@ -162,27 +170,53 @@ const std::vector<std::string>& choices(const std::string& name) {
     return c.at(name);
 }
 
-// the openings of `--opening x0,z0,width,height` values joined by ';'
-std::vector<WallOpening> openings(const std::string& joined) {
-    std::vector<WallOpening> out;
+// the comma-separated parts of each `--opening` value (the values joined by ';'), each of `parts`
+// parts, or an error showing the expected form
+std::vector<std::vector<std::string>> opening_parts(const std::string& joined, std::size_t parts, const char* form) {
+    std::vector<std::vector<std::string>> out;
     std::size_t start = 0;
     while (start < joined.size()) {
         std::size_t end = joined.find(';', start);
         if (end == std::string::npos) end = joined.size();
         const std::string one = joined.substr(start, end - start);
         start = end + 1;
-        std::vector<double> x;
+        std::vector<std::string> p;
         std::size_t from = 0;
-        for (int k = 0; k < 4 && from <= one.size(); ++k) {
+        while (p.size() <= parts) {
             std::size_t comma = one.find(',', from);
-            if (comma == std::string::npos) comma = one.size();
-            x.push_back(quantity("opening", one.substr(from, comma - from), Unit::length, k < 2));
+            p.push_back(one.substr(from, comma == std::string::npos ? std::string::npos : comma - from));
+            if (comma == std::string::npos) break;
             from = comma + 1;
         }
-        if (x.size() != 4 || from <= one.size())
-            throw Error("--opening " + printable(one) + ": expected x0,z0,width,height (m; also cm, mm)");
-        out.push_back({x[0], x[1], x[2], x[3]});
+        if (p.size() != parts)
+            throw Error("--opening " + printable(one) + ": expected " + form + " (m; also cm, mm)");
+        out.push_back(p);
         if (out.size() > 1000) throw Error("--opening: more than 1000 openings");
+    }
+    return out;
+}
+
+// the wall's openings of `--opening x0,z0,width,height`
+std::vector<WallOpening> openings(const std::string& joined) {
+    std::vector<WallOpening> out;
+    for (const auto& p : opening_parts(joined, 4, "x0,z0,width,height")) {
+        double x[4];
+        for (int k = 0; k < 4; ++k) x[k] = quantity("opening", p[size_t(k)], Unit::length, k < 2);
+        out.push_back({x[0], x[1], x[2], x[3]});
+    }
+    return out;
+}
+
+// a tower's or house's openings of `--opening wall,x0,z0,width,height` (wall 0-3; x0 along the
+// wall from its start, z0 from the base; heights rounded to whole courses of height h)
+std::vector<Opening> tower_openings(const std::string& joined, double h) {
+    std::vector<Opening> out;
+    for (const auto& p : opening_parts(joined, 5, "wall,x0,z0,width,height")) {
+        if (p[0].size() != 1 || p[0][0] < '0' || p[0][0] > '3')
+            throw Error("--opening " + printable(p[0]) + ",...: the wall is 0 (front, -y), 1 (+x), 2 (+y) or 3 (-x)");
+        double x[4];
+        for (int k = 0; k < 4; ++k) x[k] = quantity("opening", p[size_t(k) + 1], Unit::length, k < 2);
+        out.push_back({p[0][0] - '0', x[0], x[0] + x[2], int(std::lround(x[1] / h)), int(std::lround((x[1] + x[3]) / h))});
     }
     return out;
 }
@@ -261,6 +295,7 @@ Generated generate(const std::string& kind, const std::map<std::string, double>&
                         std::to_string(kMaxGeneratedBlocks));
         // a row of a 10⁴-block trajectory is about 1.5 MB: sample every 50 ms, not 5
         s.run.output_interval = 0.05;
+        t.openings = tower_openings(text.at("opening"), t.brick_height);
         if (kind == "tower") {
             add_tower(s, t);
             s.description = "Brick tower of four bonded walls, " + std::to_string(t.courses) + " courses (cairn make tower)";
