@@ -44,7 +44,9 @@ TEST_CASE("a tower of 10^4 bricks loads", "[scene][builders]") {
     CHECK(loaded.blocks.size() == 10001u);
 }
 
-TEST_CASE("a house: openings remove their volume, lintels bridge them", "[scene][builders]") {
+namespace {
+// a house of 10 × 8 bricks and 20 courses, with a door of 14 courses and windows of courses 6-12
+HouseSpec small_house() {
     HouseSpec h;
     h.walls = TowerSpec{10, 8, 20, 0.24, 0.07, {}};
     h.door_width = 0.72;
@@ -52,6 +54,12 @@ TEST_CASE("a house: openings remove their volume, lintels bridge them", "[scene]
     h.window_width = 0.48;
     h.window_sill = 0.42;    // course 6
     h.window_height = 0.49;  // up to course 13
+    return h;
+}
+}  // namespace
+
+TEST_CASE("a house: openings remove their volume, lintels bridge them", "[scene][builders]") {
+    HouseSpec h = small_house();
     const auto openings = house_openings(h);
     REQUIRE(openings.size() == 4u);
     CHECK(openings[0].course_to == 14);
@@ -80,13 +88,7 @@ TEST_CASE("an opening too close to a corner is refused", "[scene][builders]") {
 }
 
 TEST_CASE("a house keeps the caller's openings beside its door and windows; holes that meet are refused", "[scene][builders]") {
-    HouseSpec h;
-    h.walls = TowerSpec{10, 8, 20, 0.24, 0.07, {}};
-    h.door_width = 0.72;
-    h.door_height = 0.98;    // 14 courses
-    h.window_width = 0.48;
-    h.window_sill = 0.42;    // course 6
-    h.window_height = 0.49;  // up to course 13
+    HouseSpec h = small_house();
     // wall 1 (1.92 m): the window over [0.72, 1.2]; a second hole [0.24, 0.48] × courses 0-10
     h.walls.openings = {{1, 0.24, 0.48, 0, 10}};
     Scene s = test::builder_scene();
