@@ -281,7 +281,7 @@ Generated generate(const std::string& kind, const std::map<std::string, double>&
         w.bond = text.at("bond") == "english" ? WallBond::english : WallBond::running;
         w.openings = openings(text.at("opening"));
         add_wall(s, w);
-        s.description = "Dry brick wall of " + std::to_string(w.courses) + " courses in " + text.at("bond") + " bond" +
+        s.description = "Dry brick wall of " + std::to_string(w.courses) + " courses in " + (text.at("bond") == "english" ? "English" : "running") + " bond" +
                         (w.openings.empty() ? "" : " with " + std::to_string(w.openings.size()) + " opening(s)") +
                         " (cairn make wall)";
     } else if (kind == "column") {
