@@ -1,10 +1,13 @@
 // `cairn make arch|wall|column|tower|house`: a scene file from a generator (docs/cli.md)
+#include <algorithm>
 #include <cmath>
 #include <iostream>
 #include <map>
+#include <sstream>
 
 #include <CLI/CLI.hpp>
 
+#include "analytic/arch_thrust.hpp"
 #include "commands.hpp"
 #include "error.hpp"
 #include "output/atomic_write.hpp"
@@ -21,7 +24,7 @@ namespace cairn {
 namespace {
 
 // what a parameter measures: its SI unit and the suffixes it accepts
-enum class Unit { count, length, angle, stiffness, density, time, ratio };
+enum class Unit { count, length, angle, stiffness, density, time, ratio, choice, openings };
 
 struct Param {
     const char* name;      // option name without "--"
@@ -37,16 +40,26 @@ const std::map<std::string, std::vector<Param>>& generator_params() {
          {{"voussoirs", "9", Unit::count, "number of voussoirs N"},
           {"radius", "2.25m", Unit::length, "centreline radius R"},
           {"thickness", "0.5m", Unit::length, "radial thickness t"},
+          {"thickness-ratio", "0", Unit::ratio, "t/R; when > 0 it sets the thickness instead of --thickness"},
           {"depth", "0.5m", Unit::length, "depth along y"},
           {"angle", "180deg", Unit::angle, "angle the arch subtends: 180deg semicircular, less segmental"},
           {"pointed", "0", Unit::ratio,
-           "pointed (two-centred) arch: each half's centre offset from the axis as a fraction of the span 2R; 0 round"}}},
+           "pointed (two-centred) arch: each half's centre offset from the axis as a fraction of the span 2R; 0 round"},
+          {"reference", "none", Unit::choice,
+           "none, or limit-analysis (semicircular only): a [reference] of kind arch that expects the arch to stand "
+           "when t/R exceeds the least t/R at which a thrust line fits N voussoirs, else to collapse"}}},
         {"wall",
          {{"courses", "6", Unit::count, "courses"},
           {"bricks", "6", Unit::count, "whole bricks per course"},
           {"brick-length", "0.4m", Unit::length, "brick length (along the wall)"},
           {"brick-thickness", "0.2m", Unit::length, "brick thickness (the wall's)"},
-          {"brick-height", "0.2m", Unit::length, "brick height"}}},
+          {"brick-height", "0.2m", Unit::length, "brick height"},
+          {"bond", "running", Unit::choice,
+           "running (one brick thick, half-brick offsets) or english (a brick length thick: stretcher "
+           "courses of two leaves alternate with header courses closed by queen closers)"},
+          {"opening", "", Unit::openings,
+           "a door or window x0,z0,width,height (m from the wall's left end and foot; sides rounded to quarter "
+           "bricks, sill and head to courses; a lintel over it); repeatable"}}},
         {"column",
          {{"drums", "3", Unit::count, "number of drums"},
           {"width", "0.3m", Unit::length, "side of the square section"},
@@ -56,7 +69,11 @@ const std::map<std::string, std::vector<Param>>& generator_params() {
           {"width", "10", Unit::count, "outer width along y, in brick lengths"},
           {"courses", "40", Unit::count, "courses"},
           {"brick-length", "0.24m", Unit::length, "brick length; the walls are half of it thick"},
-          {"brick-height", "0.07m", Unit::length, "brick height"}}},
+          {"brick-height", "0.07m", Unit::length, "brick height"},
+          {"opening", "", Unit::openings,
+           "a hole wall,x0,z0,width,height: wall 0 front (-y), 1 right, 2 back, 3 left; m along the wall from its "
+           "-x or -y end and from the base; sides rounded to half bricks, heights to courses; a lintel over it; "
+           "repeatable"}}},
         {"house",
          {{"length", "16", Unit::count, "outer length along x, in brick lengths"},
           {"width", "12", Unit::count, "outer width along y, in brick lengths"},
@@ -67,7 +84,11 @@ const std::map<std::string, std::vector<Param>>& generator_params() {
           {"door-height", "2m", Unit::length, "door height, rounded to whole courses"},
           {"window-width", "0.72m", Unit::length, "window centred in each other wall"},
           {"window-sill", "0.9m", Unit::length, "sill height, rounded to whole courses"},
-          {"window-height", "1m", Unit::length, "window height, rounded to whole courses"}}},
+          {"window-height", "1m", Unit::length, "window height, rounded to whole courses"},
+          {"opening", "", Unit::openings,
+           "another hole wall,x0,z0,width,height: wall 0 front (-y), 1 right, 2 back, 3 left; m along the wall from its "
+           "-x or -y end and from the base; sides rounded to half bricks, heights to courses; a lintel over it; "
+           "repeatable"}}},
     };
     return params;
 }
@@ -79,6 +100,9 @@ const std::vector<Param>& common_params() {
         {"kn", "1e9", Unit::stiffness, "normal contact stiffness per area, N/m³ (= ks)"},
         {"friction", "0.7", Unit::ratio, "Coulomb friction coefficient"},
         {"damping-ratio", "0.1", Unit::ratio, "contact damping ratio ζ"},
+        {"scheme", "paper", Unit::choice,
+         "contact scheme of the in-house engine: paper (hitting points) or overlap (integrated over each face)"},
+        {"subdivision", "4", Unit::count, "overlap scheme: sub-contacts per edge of a face, 1 to 16"},
         {"duration", "1s", Unit::time, "simulated time"},
     };
     return params;
@@ -93,12 +117,14 @@ const char* unit_text(Unit u) {
     case Unit::density: return "kg/m³";
     case Unit::time: return "s; also ms";
     case Unit::ratio: return "dimensionless";
+    case Unit::choice: return "a name";
+    case Unit::openings: return "m,m,m,m";
     }
     return "";
 }
 
-// the value of `text` in SI, or an error naming the option
-double quantity(const std::string& option, const std::string& text, Unit unit) {
+// the value of `text` in SI, or an error naming the option; zero_ok: a length may be 0
+double quantity(const std::string& option, const std::string& text, Unit unit, bool zero_ok = false) {
     const std::string where = "--" + option + " " + printable(text);
     std::size_t used = 0;
     double x = 0.0;
@@ -125,8 +151,8 @@ double quantity(const std::string& option, const std::string& text, Unit unit) {
     if (unit == Unit::count) {
         // counts are whole and bounded so that no input can ask for an unbounded scene
         if (x != std::floor(x) || x < 1 || x > 1000) throw Error(where + ": expected a whole number from 1 to 1000");
-    } else if (unit == Unit::ratio ? x < 0.0 : !(x > 0.0)) {
-        throw Error(where + (unit == Unit::ratio ? ": must be >= 0" : ": must be > 0"));
+    } else if (unit == Unit::ratio || zero_ok ? x < 0.0 : !(x > 0.0)) {
+        throw Error(where + (unit == Unit::ratio || zero_ok ? ": must be >= 0" : ": must be > 0"));
     }
     return x;
 }
@@ -134,18 +160,91 @@ double quantity(const std::string& option, const std::string& text, Unit unit) {
 // most blocks a generated scene may hold (a 10⁴-block tower is about 1 MB of TOML)
 constexpr long long kMaxGeneratedBlocks = 100000;
 
-Scene generate(const std::string& kind, const std::map<std::string, double>& v) {
-    Scene s;
+// the names a choice parameter accepts
+const std::vector<std::string>& choices(const std::string& name) {
+    static const std::map<std::string, std::vector<std::string>> c = {
+        {"bond", {"running", "english"}},
+        {"reference", {"none", "limit-analysis"}},
+        {"scheme", {"paper", "overlap"}},
+    };
+    return c.at(name);
+}
+
+// the comma-separated parts of each `--opening` value (the values joined by ';'), each of `parts`
+// parts, or an error showing the expected form
+std::vector<std::vector<std::string>> opening_parts(const std::string& joined, std::size_t parts, const char* form) {
+    std::vector<std::vector<std::string>> out;
+    std::size_t start = 0;
+    while (start < joined.size()) {
+        std::size_t end = joined.find(';', start);
+        if (end == std::string::npos) end = joined.size();
+        const std::string one = joined.substr(start, end - start);
+        start = end + 1;
+        std::vector<std::string> p;
+        std::size_t from = 0;
+        while (p.size() <= parts) {
+            std::size_t comma = one.find(',', from);
+            p.push_back(one.substr(from, comma == std::string::npos ? std::string::npos : comma - from));
+            if (comma == std::string::npos) break;
+            from = comma + 1;
+        }
+        if (p.size() != parts)
+            throw Error("--opening " + printable(one) + ": expected " + form + " (m; also cm, mm)");
+        out.push_back(p);
+        if (out.size() > 1000) throw Error("--opening: more than 1000 openings");
+    }
+    return out;
+}
+
+// the wall's openings of `--opening x0,z0,width,height`
+std::vector<WallOpening> openings(const std::string& joined) {
+    std::vector<WallOpening> out;
+    for (const auto& p : opening_parts(joined, 4, "x0,z0,width,height")) {
+        double x[4];
+        for (int k = 0; k < 4; ++k) x[k] = quantity("opening", p[size_t(k)], Unit::length, k < 2);
+        out.push_back({x[0], x[1], x[2], x[3]});
+    }
+    return out;
+}
+
+// a tower's or house's openings of `--opening wall,x0,z0,width,height` (wall 0-3; x0 along the
+// wall from its start, z0 from the base; heights rounded to whole courses of height h)
+std::vector<Opening> tower_openings(const std::string& joined, double h) {
+    std::vector<Opening> out;
+    for (const auto& p : opening_parts(joined, 5, "wall,x0,z0,width,height")) {
+        if (p[0].size() != 1 || p[0][0] < '0' || p[0][0] > '3')
+            throw Error("--opening " + printable(p[0]) + ",...: the wall is 0 (front, -y), 1 (+x), 2 (+y) or 3 (-x)");
+        double x[4];
+        for (int k = 0; k < 4; ++k) x[k] = quantity("opening", p[size_t(k) + 1], Unit::length, k < 2);
+        out.push_back({p[0][0] - '0', x[0], x[0] + x[2], int(std::lround(x[1] / h)), int(std::lround((x[1] + x[3]) / h))});
+    }
+    return out;
+}
+
+// a generated scene: the scene and the TOML tables scene_toml does not write (probes, reference)
+struct Generated {
+    Scene scene;
+    std::string extra;
+};
+
+Generated generate(const std::string& kind, const std::map<std::string, double>& v,
+                   const std::map<std::string, std::string>& text) {
+    Generated g;
+    Scene& s = g.scene;
     s.materials.push_back({"stone", v.at("density"), 30e9, 0.2});
     s.contact.kn = s.contact.ks = v.at("kn");
     s.contact.friction = v.at("friction");
     s.contact.damping_rule = v.at("damping-ratio") > 0 ? ContactDampingRule::ratio : ContactDampingRule::none;
     s.contact.damping = v.at("damping-ratio");
+    s.contact.scheme = text.at("scheme") == "overlap" ? ContactScheme::overlap : ContactScheme::paper;
+    s.contact.subdivision = int(v.at("subdivision"));
+    if (s.contact.subdivision > 16) throw Error("--subdivision must be at most 16");
     s.run.duration = v.at("duration");
     s.run.output_interval = 0.005;
     auto count = [&](const char* k) { return int(v.at(k)); };
     if (kind == "arch") {
         ArchSpec a{count("voussoirs"), v.at("radius"), v.at("thickness"), v.at("depth"), v.at("angle")};
+        if (v.at("thickness-ratio") > 0.0) a.thickness = v.at("thickness-ratio") * a.radius;
         if (a.thickness >= 2 * a.radius) throw Error("--thickness must be less than twice --radius");
         if (a.angle > M_PI + 1e-12) throw Error("--angle must be at most 180deg");
         a.angle = std::min(a.angle, M_PI);
@@ -153,14 +252,38 @@ Scene generate(const std::string& kind, const std::map<std::string, double>& v) 
         if (a.pointed > 1.0) throw Error("--pointed must be at most 1 (centres a span beyond the axis)");
         if (a.pointed > 0.0 && a.angle < M_PI) throw Error("--pointed needs a full arch: --angle 180deg");
         add_arch(s, a);
-        s.description = "Arch of " + std::to_string(a.voussoirs) + " voussoirs on two fixed springers (cairn make arch)";
+        std::ostringstream o;
+        o.precision(10);
+        o << (a.pointed > 0.0 ? "Pointed" : a.angle < M_PI ? "Segmental" : "Semicircular") << " arch of " << a.voussoirs
+          << " voussoirs, t/R = " << a.thickness / a.radius << ", on two fixed springers (cairn make arch)";
+        s.description = o.str();
+        o.str("");
+        if (a.pointed == 0.0) {
+            // the middle of the crown's intrados, on the keystone (odd N) or left of the crown joint
+            o << "[probes.crown]   # middle of the crown's intrados\nblock = \"V" << (a.voussoirs + 1) / 2
+              << "\"\npoint = [0.0, 0.0, " << a.radius - 0.5 * a.thickness << "]   # m, world\n\n";
+        }
+        if (text.at("reference") == "limit-analysis") {
+            if (a.pointed > 0.0 || a.angle < M_PI) throw Error("--reference limit-analysis needs a semicircular arch");
+            const double least = oracle::SemicircularArch{a.voussoirs}.minimum_thickness();
+            const bool stands = a.thickness / a.radius > least;
+            o << "[reference]   # t/R = " << a.thickness / a.radius << (stands ? " above" : " below")
+              << " the least t/R = " << least << " at which a thrust line fits " << a.voussoirs
+              << " voussoirs\nkind = \"arch\"\nblock = \"V" << (a.voussoirs + 1) / 2 << "\"\nstands = "
+              << (stands ? 1 : 0) << "\nthickness = " << a.thickness << "   # m\n";
+        }
+        g.extra = o.str();
     } else if (kind == "wall") {
         WallSpec w;
         w.courses = count("courses");
         w.bricks = count("bricks");
         w.brick = Vec3(v.at("brick-length"), v.at("brick-thickness"), v.at("brick-height"));
+        w.bond = text.at("bond") == "english" ? WallBond::english : WallBond::running;
+        w.openings = openings(text.at("opening"));
         add_wall(s, w);
-        s.description = "Dry brick wall of " + std::to_string(w.courses) + " courses in running bond (cairn make wall)";
+        s.description = "Dry brick wall of " + std::to_string(w.courses) + " courses in " + (text.at("bond") == "english" ? "English" : "running") + " bond" +
+                        (w.openings.empty() ? "" : " with " + std::to_string(w.openings.size()) + " opening(s)") +
+                        " (cairn make wall)";
     } else if (kind == "column") {
         ColumnSpec c{count("drums"), v.at("width"), v.at("drum-height"), true};
         add_column(s, c);
@@ -172,6 +295,7 @@ Scene generate(const std::string& kind, const std::map<std::string, double>& v) 
                         std::to_string(kMaxGeneratedBlocks));
         // a row of a 10⁴-block trajectory is about 1.5 MB: sample every 50 ms, not 5
         s.run.output_interval = 0.05;
+        t.openings = tower_openings(text.at("opening"), t.brick_height);
         if (kind == "tower") {
             add_tower(s, t);
             s.description = "Brick tower of four bonded walls, " + std::to_string(t.courses) + " courses (cairn make tower)";
@@ -185,7 +309,7 @@ Scene generate(const std::string& kind, const std::map<std::string, double>& v) 
     if ((long long)s.blocks.size() > kMaxGeneratedBlocks)
         throw Error("a scene of " + std::to_string(s.blocks.size()) + " blocks, beyond the limit of " +
                     std::to_string(kMaxGeneratedBlocks));
-    return s;
+    return g;
 }
 
 }  // namespace
@@ -200,6 +324,20 @@ std::vector<CLI::App*> add_make_commands(CLI::App& app, MakeOptions& options) {
         all.insert(all.end(), common_params().begin(), common_params().end());
         for (const Param& p : all) {
             options.values[kind][p.name] = p.value;
+            const std::string help = std::string(p.help) + " [" + unit_text(p.unit) + "]";
+            if (p.unit == Unit::openings) {
+                // repeatable: the values joined by ';' (which no number contains)
+                std::string& joined = options.values[kind][p.name];
+                sub->add_option_function<std::vector<std::string>>(
+                       std::string("--") + p.name,
+                       [&joined](const std::vector<std::string>& all) {
+                           joined.clear();
+                           for (const auto& one : all) joined += (joined.empty() ? "" : ";") + one;
+                       },
+                       help)
+                    ->allow_extra_args(false);
+                continue;
+            }
             sub->add_option(std::string("--") + p.name, options.values[kind][p.name],
                             std::string(p.help) + " [" + unit_text(p.unit) + "] (default " + p.value + ")");
         }
@@ -213,16 +351,39 @@ std::string make_scene_text(const std::string& kind, const std::map<std::string,
     std::vector<Param> all = generator_params().at(kind);
     all.insert(all.end(), common_params().begin(), common_params().end());
     std::map<std::string, double> v;
+    std::map<std::string, std::string> text;
     std::string command = "cairn make " + kind;
     for (const Param& p : all) {
         auto it = values.find(p.name);
-        const std::string text = it == values.end() ? p.value : it->second;
-        v[p.name] = quantity(p.name, text, p.unit);
-        command += " --" + std::string(p.name) + " " + text;
+        const std::string value = it == values.end() ? p.value : it->second;
+        if (p.unit == Unit::openings) {
+            // one --opening per hole, as typed
+            text[p.name] = value;
+            std::size_t start = 0;
+            while (start < value.size()) {
+                const std::size_t end = std::min(value.find(';', start), value.size());
+                command += " --" + std::string(p.name) + " " + value.substr(start, end - start);
+                start = end + 1;
+            }
+            continue;
+        }
+        if (p.unit == Unit::choice) {
+            const auto& names = choices(p.name);
+            if (std::find(names.begin(), names.end(), value) == names.end()) {
+                std::string list;
+                for (const auto& n : names) list += (list.empty() ? "" : ", ") + n;
+                throw Error("--" + std::string(p.name) + " " + printable(value) + ": expected one of " + list);
+            }
+            text[p.name] = value;
+        } else {
+            v[p.name] = quantity(p.name, value, p.unit);
+        }
+        command += " --" + std::string(p.name) + " " + value;
     }
-    const Scene scene = generate(kind, v);
-    return scene_toml(scene, "generated by: " + command + "\n" + std::to_string(scene.blocks.size()) +
-                                 " blocks; edit freely (docs/scenes.md)\n");
+    const Generated g = generate(kind, v, text);
+    return scene_toml(g.scene, "generated by: " + command + "\n" + std::to_string(g.scene.blocks.size()) +
+                                   " blocks; edit freely (docs/scenes.md)\n") +
+           g.extra;
 }
 
 int make_command(const std::string& kind, const MakeOptions& options) {

@@ -21,7 +21,9 @@ std::vector<Opening> house_openings(const HouseSpec& house) {
 
 int add_house(Scene& scene, const HouseSpec& house) {
     TowerSpec t = house.walls;
-    t.openings = house_openings(house);
+    std::vector<Opening> holes = house_openings(house);
+    holes.insert(holes.end(), t.openings.begin(), t.openings.end());   // the caller's, after the door and windows
+    t.openings = holes;
     return add_tower(scene, t);
 }
 

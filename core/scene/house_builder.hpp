@@ -6,7 +6,7 @@
 
 namespace cairn {
 
-/// the house: the tower's plan and bricks (its openings are replaced) and the holes, m
+/// the house: the tower's plan and bricks (its openings are kept, after the door and windows) and the holes, m
 struct HouseSpec {
     TowerSpec walls{16, 12, 36, 0.24, 0.07, {}};   ///< plan in bricks, courses, brick size
     double door_width = 0.96;      ///< m, centred in the front wall (wall 0)

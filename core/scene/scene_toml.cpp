@@ -68,6 +68,8 @@ std::string scene_toml(const Scene& scene, const std::string& comment) {
         << num(c.friction) << "\n";
     if (c.damping_rule == ContactDampingRule::ratio) out << "damping_ratio = " << num(c.damping) << "\n";
     if (c.damping_rule == ContactDampingRule::time) out << "damping_time = " << num(c.damping) << "   # s\n";
+    if (c.scheme == ContactScheme::overlap)
+        out << "scheme = \"overlap\"\nsubdivision = " << c.subdivision << "   # sub-contacts per edge of a face\n";
     out << "\n" << blocks_toml(scene, scene.materials.empty() ? "stone" : scene.materials.front().name);
     return out.str();
 }

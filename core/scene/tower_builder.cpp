@@ -59,6 +59,14 @@ int add_tower(Scene& scene, const TowerSpec& t) {
         check_opening(t, o, o.wall < 0 || o.wall > 3 ? 0.0 : side[o.wall], l, int(k));
         o.from = w * std::round(o.from / w);   // joints fall on whole brick thicknesses
         o.to = w * std::round(o.to / w);
+        for (size_t j = 0; j < k; ++j) {
+            // two holes of a wall with their lintels' bearings (w each side) must not meet
+            const Opening& p = openings[j];
+            if (p.wall == o.wall && o.from - w < p.to + w - tiny && p.from - w < o.to + w - tiny &&
+                o.course_from <= p.course_to && p.course_from <= o.course_to)
+                throw Error("opening " + std::to_string(k) + " meets opening " + std::to_string(j) +
+                            " or its lintel in wall " + std::to_string(o.wall));
+        }
     }
     add_box(scene, "base", Vec3(lx + 1.0, ly + 1.0, 0.5), Vec3(0, 0, -0.25), true);
     const int first = int(scene.blocks.size());

@@ -1,17 +1,21 @@
 // generated arch, wall and column (the builders behind `cairn make`) pass the scene loader's checks
 // and stand under gravity on dem and Bullet: total mass and centre of mass against closed forms,
 // every bearing interface in contact, and every block's displacement within the elastic settlement
-// of the joints under it
+// of the joints under it; the arch's settled crown against the statics of its no-tension joints
 #include <catch2/catch.hpp>
 
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <set>
+#include <map>
 #include <utility>
+
+#include <Eigen/Dense>
 
 #include "engine_scenes.hpp"
 #include "geometry/hexahedron.hpp"
+#include "geometry/overlap.hpp"
 #include "registry.hpp"
 #include "scene/arch_builder.hpp"
 #include "scene/column_builder.hpp"
@@ -144,16 +148,128 @@ Generated arch() {
     g.bearing.insert(pair_of(left, v1));
     for (int i = 0; i + 1 < a.voussoirs; ++i) g.bearing.insert(pair_of(v1 + i, v1 + i + 1));
     g.bearing.insert(pair_of(v1 + a.voussoirs - 1, right));
-    // each joint carries at most the half arch's weight W/2 vertically and a thrust below W/2 (the
-    // thrust of a semicircular arch under its own weight is a fraction of it): F ≤ W/√2 on a joint of
-    // t·depth; the crown sits beyond (N + 1)/2 joints from either springer, and the step load
-    // doubles the static closure
-    const double joint = g.mass * kG / std::sqrt(2.0) / (kKn * a.thickness * a.depth);
-    g.bound = 2.0 * 0.5 * (a.voussoirs + 1) * joint;
+    // no bound: the arch's rest is its joints' statics (arch_rest), checked in its own tests
     return g;
 }
 
-void check_stands(const Generated& g, const std::string& engine) {
+
+// The arch at rest on its joints, as linear statics of the same discrete model: rigid voussoirs
+// (3 degrees of freedom each in the x-z plane: ux, uz and the rotation θ about y, at the centroid)
+// joined by the joints' penalty springs kn and ks per area, integrated over each joint face
+// t × depth with the given points across t (s from the joint's centre along the radius, weight m).
+// The energy ½ Σ_joints depth·Σ_points w·(kn (Δ·τ)² + ks (Δ·ρ)²), Δ the jump in displacement at the
+// point, τ the joint normal (the arch's tangent) and ρ its radius, is exact for a closed joint (linear
+// pressure): it holds while every joint stays compressed over its whole face, which the solution
+// reports (least edge closure). The settled arch of an engine that integrates its joints this way
+// rests here: the joints' closure *and* their rotation under the eccentric thrust are in it.
+struct ArchRest {
+    double crown = 0.0;          // downward displacement of the keystone's centroid, m
+    double worst = 0.0;          // largest displacement of any voussoir's centroid, m
+    double open_fraction = 0.0;  // fraction of the joints' faces that opened
+    double omega = 0.0;          // lowest natural frequency about that state, rad/s
+};
+
+struct JointRule {
+    std::vector<std::pair<double, double>> points;   // (s / t, weight / t) across the thickness
+    double ks_factor = 1.0;                          // shear springs ks × this
+};
+
+// exact for any pressure linear across t: two Gauss points
+// the midpoint rule on m strips across t: a partly open joint integrated to O(1/m²)
+JointRule strips(int m, double ks_factor = 1.0) {
+    JointRule r;
+    for (int k = 0; k < m; ++k) r.points.push_back({-0.5 + (k + 0.5) / m, 1.0 / m});
+    r.ks_factor = ks_factor;
+    return r;
+}
+
+ArchRest arch_rest(const Scene& s, const ArchSpec& a, const JointRule& rule) {
+    const int n = a.voussoirs;
+    const double phi = a.angle / n, t = a.thickness, kn = s.contact.kn, ks = s.contact.ks * rule.ks_factor;
+    std::vector<Vec3> g(static_cast<size_t>(n));
+    Eigen::MatrixXd mass = Eigen::MatrixXd::Zero(3 * n, 3 * n);
+    Eigen::VectorXd f = Eigen::VectorXd::Zero(3 * n);
+    for (int i = 0; i < n; ++i) {
+        const BlockDef& b = s.blocks[size_t(index_of(s, "V" + std::to_string(i + 1)))];
+        const MassProperties mp =
+            mass_properties(placed_corners(b.corners, b.position, b.orientation), s.materials[size_t(b.material)].density);
+        g[size_t(i)] = mp.centre;
+        mass(3 * i, 3 * i) = mass(3 * i + 1, 3 * i + 1) = mp.mass;
+        mass(3 * i + 2, 3 * i + 2) = mp.inertia(1, 1);
+        f(3 * i + 1) = -mp.mass * kG;
+    }
+    // displacement (x, z) at world point p of voussoir k per unit of its 3 freedoms
+    auto basis = [&](int k, const Vec3& p) {
+        Eigen::Matrix<double, 2, 3> B;
+        const Vec3 r = p - g[size_t(k)];
+        B << 1, 0, r.z(), 0, 1, -r.x();
+        return B;
+    };
+    // the jump Δ = u_b − u_a at point p of joint j per unit freedom (voussoirs j − 1 and j; the
+    // abutments are fixed), the joint's normal τ (the tangent) and radius ρ
+    struct JointPoint {
+        Eigen::MatrixXd J;
+        Eigen::Vector2d tau, rho;
+        double weight = 0.0;   // depth × tributary length, m²
+    };
+    std::vector<JointPoint> pts;
+    for (int j = 0; j <= n; ++j) {
+        const double al = j * phi + 0.5 * (M_PI - a.angle);
+        const Vec3 c(-a.radius * std::cos(al), 0, a.radius * std::sin(al));
+        const Eigen::Vector2d tau(std::sin(al), std::cos(al)), rho(-std::cos(al), std::sin(al));
+        for (const auto& [sr, wr] : rule.points) {
+            const Vec3 p = c + sr * t * Vec3(rho.x(), 0, rho.y());
+            Eigen::MatrixXd J = Eigen::MatrixXd::Zero(2, 3 * n);
+            if (j > 0) J.block(0, 3 * (j - 1), 2, 3) = -basis(j - 1, p);
+            if (j < n) J.block(0, 3 * j, 2, 3) = basis(j, p);
+            pts.push_back({J, tau, rho, a.depth * wr * t});
+        }
+    }
+    // no tension: a point carries kn and ks only while its side of the joint is closed. The law is
+    // piecewise linear, so the active set is iterated to a fixed point (Newton on each piece)
+    std::vector<char> active(pts.size(), 1);
+    Eigen::VectorXd q = Eigen::VectorXd::Zero(3 * n);
+    Eigen::MatrixXd K;
+    for (int it = 0; it < 100; ++it) {
+        K = Eigen::MatrixXd::Zero(3 * n, 3 * n);
+        for (size_t k = 0; k < pts.size(); ++k)
+            if (active[k]) {
+                const Eigen::Matrix2d D = kn * pts[k].tau * pts[k].tau.transpose() + ks * pts[k].rho * pts[k].rho.transpose();
+                K += pts[k].weight * pts[k].J.transpose() * D * pts[k].J;
+            }
+        q = K.ldlt().solve(f);
+        bool changed = false;
+        for (size_t k = 0; k < pts.size(); ++k) {
+            const char now = (pts[k].J * q).dot(pts[k].tau) < 0.0;   // closing: the jump points back along τ
+            changed |= now != active[k];
+            active[k] = now;
+        }
+        if (!changed) break;
+        REQUIRE(it < 99);
+    }
+    int open = 0;
+    for (char x : active) open += !x;
+    ArchRest out;
+    const int key = n / 2;   // the keystone (odd N) or the voussoir left of the crown joint
+    out.crown = -q(3 * key + 1);
+    for (int i = 0; i < n; ++i) out.worst = std::max(out.worst, std::hypot(q(3 * i), q(3 * i + 1)));
+    out.open_fraction = double(open) / double(pts.size());
+    // lowest mode of K x = ω² M x
+    Eigen::GeneralizedSelfAdjointEigenSolver<Eigen::MatrixXd> modes(K, mass);
+    out.omega = std::sqrt(modes.eigenvalues()(0));
+    return out;
+}
+
+// what a run ended with: the downward displacement of one free block's centre and the fastest block
+struct End {
+    double settlement = 0.0;   // m
+    double speed = 0.0;        // m/s
+    double worst = 0.0;        // largest displacement of any block, m
+};
+
+// mass, centre of mass, the loaded bearing joints, and (bound > 0) every block within the bound
+// after `duration`; `watched` the index among the free blocks whose settlement is returned
+End check_stands(const Generated& g, const std::string& engine, double duration = 0.3, size_t watched = 0) {
     const Scene& s = g.scene;
     CAPTURE(g.label, engine);
     // the loader's mass per block (exact for hexahedra) against the closed form
@@ -180,7 +296,7 @@ void check_stands(const Generated& g, const std::string& engine) {
     CAPTURE(centre.transpose(), g.centre.transpose());
     CHECK((centre - g.centre).norm() < 1e-9);   // positions of metres: rounding only
 
-    const int steps = int(std::lround(0.3 / backend->time_step()));
+    const int steps = int(std::lround(duration / backend->time_step()));
     for (int i = 0; i < steps; ++i)
         if (backend->step() != StepStatus::ok) FAIL(engine << " unstable: " << backend->failure());
     const Sample end = backend->sample();
@@ -199,7 +315,43 @@ void check_stands(const Generated& g, const std::string& engine) {
     CAPTURE(worst, g.bound);
     WARN(g.label << " on " << engine << ": " << loaded.size() << " loaded pairs (" << g.bearing.size()
                 << " bearing), largest displacement " << worst << " m, bound " << g.bound << " m");
-    CHECK(worst < g.bound);
+    if (g.bound > 0.0) CHECK(worst < g.bound);
+    End out;
+    out.worst = worst;
+    out.settlement = start.blocks[watched].position.z() - end.blocks[watched].position.z();
+    for (const auto& b : end.blocks) out.speed = std::max(out.speed, b.velocity.norm());
+    return out;
+}
+
+// the generated arch settled on `engine` (once per engine: the runs take seconds)
+struct Settled {
+    Scene scene;
+    ArchSpec spec;
+    double crown = 0.0;   // downward displacement of the keystone's centre, m
+    double speed = 0.0;   // fastest block at the end, m/s
+    double worst = 0.0;   // largest displacement of any block, m
+};
+
+const Settled& settle_arch(const std::string& engine) {
+    static std::map<std::string, Settled> done;
+    if (done.count(engine)) return done.at(engine);
+    Generated g = arch();
+    Settled r;
+    r.spec = ArchSpec{9, 2.25, 0.5, 0.5, M_PI};
+    const ArchRest rest = arch_rest(g.scene, r.spec, strips(200));
+    g.scene.damping.alpha = 2.0 * rest.omega;   // 1/s: the lowest mode critically damped
+    // the keystone V5 among the free blocks (the loader keeps name order: left, right are fixed)
+    size_t key = 0;
+    for (const auto& b : g.scene.blocks) {
+        if (b.name == "V5") break;
+        if (!b.fixed) ++key;
+    }
+    const End e = check_stands(g, engine, 0.5, key);
+    r.scene = g.scene;
+    r.crown = e.settlement;
+    r.speed = e.speed;
+    r.worst = e.worst;
+    return done[engine] = r;
 }
 
 }  // namespace
@@ -222,13 +374,51 @@ TEST_CASE("generated column and wall stand on dem and bullet", "[engines][genera
     SECTION("running-bond wall of 4 courses") { check_stands(wall(), engine); }
 }
 
-// the arch's bound counts the closure of its joints only, not their rotation under an eccentric
-// thrust (up to 2δ/t per joint at the middle third's edge, on a lever of up to R): both engines
-// settle beyond it and stay there (dem's crown 1.2 mm, Bullet's matched 6 mm after 1 s). The
-// bound was set before the runs and is kept: a miss reported (may fail) until a bound with the
-// joints' rotation is derived and checked on its own, and Bullet's 5x deeper sink is understood
-TEST_CASE("generated arch stands on dem and bullet", "[engines][generated][!mayfail]") {
-    const std::string engine = GENERATE(as<std::string>{}, "dem", "bullet");
-    if (!built_in(engine)) return;
-    check_stands(arch(), engine);
+// The arch settles onto its joints and rests where the statics of its no-tension joints put it
+// (arch_rest). Mass-proportional damping α = 2ω₁ (ω₁ the arch's lowest frequency on its joints)
+// brings it to rest within the run without moving that rest: the static equilibrium holds whatever
+// α. Mass, centre of mass and the loaded joints are checked as for the column and the wall.
+// dem's paper scheme integrates each joint with hitting points on a grid ≤ 0.1 m (trapezoid rule,
+// docs/dem.md): its settlement lies between the rest with that rule (6 points across t) and the
+// exact integral, widened by 3 % for the motion left after 0.5 s (e^{−αt/2} < 1e-4 of it) and the
+// hitting points' activity allowance of 1e-4 of an edge
+TEST_CASE("a generated arch rests where the statics of its no-tension joints put it, on dem", "[engines][generated]") {
+    const Settled& r = settle_arch("dem");
+    const ArchRest exact = arch_rest(r.scene, r.spec, strips(200));
+    JointRule grid;   // the paper scheme's hitting points across t = 0.5 m, 0.1 m apart, trapezoid weights
+    for (int k = 0; k <= 5; ++k) grid.points.push_back({-0.5 + 0.2 * k, (k == 0 || k == 5) ? 0.1 : 0.2});
+    const ArchRest paper = arch_rest(r.scene, r.spec, grid);
+    WARN("arch on dem: crown settles " << r.crown << " m; rest with exact joints " << exact.crown << " m ("
+         << 100 * exact.open_fraction << " % of the joint faces open), with the hitting points' rule " << paper.crown
+         << " m; fastest block at the end " << r.speed << " m/s (omega1 " << exact.omega << " rad/s)");
+    CHECK(r.crown > 0.97 * paper.crown);
+    CHECK(r.crown < 1.03 * exact.crown);
+    // at rest: the motion the step load started, ω₁·δ, has decayed below 1 %
+    CHECK(r.speed < 0.01 * exact.omega * exact.crown);
+}
+
+// Bullet's matched mode puts kn·A/4 on each point of a pair's contact manifold (A the smaller
+// bottom face), which stands for a face when the points are its 4 corners. On the arch's inclined
+// joints Bullet keeps 2 to 4 points wherever recent frames found them (the crown joint: 2 points on
+// its extrados edge, a hinge line), so its joints have neither kn·A nor a face's moment. Undamped
+// its crown sinks 6 mm, 7x the joints' statics, and keeps jittering; with α = 2ω₁ as here it ends
+// 0.3 mm above its start. It stands and comes to rest (to the velocity-level solver's jitter);
+// the settlement is checked against the statics and reported while it misses
+TEST_CASE("a generated arch stands and comes to rest on bullet", "[engines][generated]") {
+    if (!built_in("bullet")) return;
+    const Settled& r = settle_arch("bullet");
+    const ArchRest exact = arch_rest(r.scene, r.spec, strips(200));
+    WARN("arch on bullet (matched): crown settles " << r.crown << " m, rest of the joints' statics " << exact.crown
+         << " m; largest displacement " << r.worst << " m; fastest block at the end " << r.speed << " m/s");
+    // stands: as the arch reference (compare/cases/arch.cpp) judges it, within 5 % of the thickness
+    CHECK(r.worst < 0.05 * r.spec.thickness);
+    CHECK(r.speed < 0.01 * exact.omega * exact.crown);
+}
+
+TEST_CASE("bullet's arch settles as the statics of its joints", "[engines][generated][!mayfail]") {
+    if (!built_in("bullet")) return;
+    const Settled& r = settle_arch("bullet");
+    const ArchRest exact = arch_rest(r.scene, r.spec, strips(200));
+    // the miss, see above: without damping the crown sinks 6 mm (and jitters); with α = 2ω₁ it rises
+    CHECK(std::abs(r.crown - exact.crown) < 0.1 * exact.crown);
 }

@@ -44,7 +44,9 @@ TEST_CASE("a tower of 10^4 bricks loads", "[scene][builders]") {
     CHECK(loaded.blocks.size() == 10001u);
 }
 
-TEST_CASE("a house: openings remove their volume, lintels bridge them", "[scene][builders]") {
+namespace {
+// a house of 10 × 8 bricks and 20 courses, with a door of 14 courses and windows of courses 6-12
+HouseSpec small_house() {
     HouseSpec h;
     h.walls = TowerSpec{10, 8, 20, 0.24, 0.07, {}};
     h.door_width = 0.72;
@@ -52,6 +54,12 @@ TEST_CASE("a house: openings remove their volume, lintels bridge them", "[scene]
     h.window_width = 0.48;
     h.window_sill = 0.42;    // course 6
     h.window_height = 0.49;  // up to course 13
+    return h;
+}
+}  // namespace
+
+TEST_CASE("a house: openings remove their volume, lintels bridge them", "[scene][builders]") {
+    HouseSpec h = small_house();
     const auto openings = house_openings(h);
     REQUIRE(openings.size() == 4u);
     CHECK(openings[0].course_to == 14);
@@ -77,4 +85,22 @@ TEST_CASE("an opening too close to a corner is refused", "[scene][builders]") {
     TowerSpec t{5, 5, 6, 0.24, 0.07, {{0, 0.12, 0.6, 0, 3}}};
     Scene s = test::builder_scene();
     CHECK_THROWS_WITH(add_tower(s, t), Catch::Contains("opening 0: from 0.12") && Catch::Contains("one brick length"));
+}
+
+TEST_CASE("a house keeps the caller's openings beside its door and windows; holes that meet are refused", "[scene][builders]") {
+    HouseSpec h = small_house();
+    // wall 1 (1.92 m): the window over [0.72, 1.2]; a second hole [0.24, 0.48] × courses 0-10
+    h.walls.openings = {{1, 0.24, 0.48, 0, 10}};
+    Scene s = test::builder_scene();
+    add_house(s, h);
+    const Scene loaded = test::reloaded(s);
+    CHECK(test::deepest_overlap(loaded) < 1e-9);
+    const double brick = 0.24 * 0.12 * 0.07, w = 0.12, hc = 0.07;
+    const double holes = 0.72 * w * 14 * hc + 3 * 0.48 * w * 7 * hc + 0.24 * w * 10 * hc;
+    const auto m = test::free_mass(loaded);
+    CHECK(m.mass == Approx(2000.0 * (20 * (2 * 10 + 2 * 8 - 2) * brick - holes)).epsilon(1e-9));
+    // moved 0.12 m right, its lintel's bearing meets the window's
+    h.walls.openings = {{1, 0.36, 0.6, 0, 10}};
+    Scene again = test::builder_scene();
+    CHECK_THROWS_WITH(add_house(again, h), Catch::Contains("opening 4 meets opening 1 or its lintel in wall 1"));
 }
