@@ -10,6 +10,7 @@
 #include "bench/bench_report.hpp"
 #include "bench/scale_bench.hpp"
 #include "bench/scale_large.hpp"
+#include "bench/scale_pushover.hpp"
 #include "bench/stability.hpp"
 #include "bench/trade_sweep.hpp"
 #include "bench/wall_bench.hpp"
@@ -161,6 +162,19 @@ int scale(const BenchOptions& o, const std::string& dir) {
         for (size_t i = 0; i < backends.size(); ++i)
             if (r.backend == backends[i] && missed[i] && r.status == "completed")
                 r.status = "completed; no dt tried settles within 1 % (scale_accuracy.csv)";
+    // the second accuracy measure: the pushover wall's a/g within 2 %, the cheapest setting per backend
+    if (o.pushover) {
+        const auto push = bench::scale_pushover(resolve_scene("structures/wall_pushover"), backends, 0.02, make, o.quiet);
+        write_text_atomic((fs::path(dir) / "scale_pushover.csv").string(), bench::pushover_csv(push));
+        for (const auto& b : backends) {
+            const auto* p = bench::cheapest_reaching(push, b, 0.02);
+            if (p)
+                std::printf("scale pushover %-7s within 2 %%: %s, a/g %.4g against %.4g, %.3g s per simulated s\n", b.c_str(),
+                            p->setting.c_str(), p->multiplier, p->reference, p->cost);
+            else
+                std::printf("scale pushover %-7s no setting tried reaches 2 %% (scale_pushover.csv)\n", b.c_str());
+        }
+    }
     write_text_atomic((fs::path(dir) / "scale_accuracy.csv").string(), bench::scale_accuracy_csv(acc));
     write_text_atomic((fs::path(dir) / "scale.csv").string(), bench::scale_csv(rows));
     bench::write_bench_report(dir);

@@ -15,7 +15,7 @@ using namespace cairn::test;
 TEST_CASE("cairn bench scale --backends dem --sizes 100: accuracy, cost rows, report section", "[bench][app]") {
     const auto dir = fresh_dir("bench_scale_small");
     const auto out = dir / "out";
-    const auto r = run_cairn("bench scale --backends dem --sizes 100 --steps 2 --quiet --out '" + out.string() + "'", dir);
+    const auto r = run_cairn("bench scale --backends dem --sizes 100 --steps 2 --no-pushover --quiet --out '" + out.string() + "'", dir);
     INFO(r.err);
     REQUIRE(r.exit_code == 0);
     const auto acc = bench::parse_scale_accuracy_csv(bench::read_whole((out / "scale_accuracy.csv").string()));
