@@ -64,3 +64,13 @@ TEST_CASE("cairn bench scale --large --large-blocks 100: the tower under El Cent
     const std::string md = bench::read_whole((out / "bench.md").string());
     CHECK(md.find("A building-scale model under El Centro") != std::string::npos);
 }
+
+TEST_CASE("cairn bench scale refuses a large tower or duration out of range", "[bench][app]") {
+    const auto dir = fresh_dir("bench_scale_large_bad");
+    auto r = run_cairn("bench scale --large --large-blocks 5 --out '" + (dir / "out").string() + "'", dir);
+    CHECK(r.exit_code == 2);
+    CHECK(r.err.find("--large-blocks") != std::string::npos);
+    r = run_cairn("bench scale --large --large-duration 0 --out '" + (dir / "out").string() + "'", dir);
+    CHECK(r.exit_code == 2);
+    CHECK(r.err.find("--large-duration") != std::string::npos);
+}
