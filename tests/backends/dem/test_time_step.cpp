@@ -7,6 +7,7 @@
 #include "dem/block_builder.hpp"
 #include "dem/time_step.hpp"
 #include "scene/scene_io.hpp"
+#include "scene/tower_builder.hpp"
 #include "support/scene_builder.hpp"
 #include "dem_test_util.hpp"
 
@@ -156,4 +157,21 @@ TEST_CASE("dem time step: the paper's scenes keep the step of the all-pairs boun
         s.run.dt.reset();
         CHECK(test::build_dem(s)->critical_step() == Approx(dem::contact_critical_step(blocks, s.contact)).epsilon(kEigenTol));
     }
+}
+
+TEST_CASE("dem time step: a tower of equal bricks keeps the all-pairs step", "[dem][time_step]") {
+    // every brick of `cairn make tower` has the same stiffest side and touches an equal one,
+    // so the stiffest pair within reach is the pair of the two largest values anywhere
+    Scene s = test::stone_scene();
+    s.contact.scheme = ContactScheme::overlap;
+    s.contact.subdivision = 1;
+    TowerSpec t;
+    t.length = t.width = 4;
+    t.courses = 6;
+    add_tower(s, t);
+    std::vector<dem::Block> blocks;
+    for (const auto& def : s.blocks) blocks.push_back(dem::make_block(def, s));
+    const double all_pairs = dem::contact_critical_step(blocks, s.contact);
+    s.run.dt.reset();
+    CHECK(test::build_dem(s)->critical_step() == Approx(all_pairs).epsilon(kEigenTol));
 }
