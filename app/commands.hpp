@@ -130,6 +130,10 @@ struct BenchOptions {
     int wall_steps = 200;                ///< wall: steps per repeat
     std::vector<int> scale_sizes{1000, 3000, 10000};   ///< scale: bricks per wall, count
     int scale_steps = 5;                 ///< scale: steps timed per wall and backend
+    bool pushover = true;                ///< scale: also the wall pushover accuracy measure (minutes)
+    bool large = false;                  ///< scale: run only the building-scale model under El Centro on dem
+    int large_blocks = 10000;            ///< scale --large: bricks of the tower, count
+    double large_duration = 1.0;         ///< scale --large: simulated time from the record's start, s
     bool quiet = false;                  ///< no progress lines
 };
 

@@ -136,6 +136,12 @@ int main(int argc, char** argv) {
                 ->delimiter(',')
                 ->check(CLI::Range(10, 20000));
             sub->add_option("--steps", bench.scale_steps, "steps timed per wall (default 5)")->check(CLI::Range(1, 10000));
+            sub->add_flag("!--no-pushover", bench.pushover, "skip the wall pushover accuracy measure");
+            sub->add_flag("--large", bench.large, "only the ~1e4-brick tower under El Centro on dem (minutes)");
+            sub->add_option("--large-blocks", bench.large_blocks, "--large: bricks of the tower (default 10000)")
+                ->check(CLI::Range(10, 20000));
+            sub->add_option("--large-duration", bench.large_duration, "--large: simulated seconds of the record (default 1)")
+                ->check(CLI::Range(0.001, 30.0));
         }
     }
 

@@ -19,7 +19,7 @@ endmacro()
 cairn_tier(test_core_TESTS ".")
 cairn_tier(test_fuzz_TESTS ".")
 cairn_tier(test_dem_unit_TESTS ".")
-cairn_tier(test_compare_TESTS "." "study: |metacharacters|bench scale --backends")
+cairn_tier(test_compare_TESTS "." "study: |metacharacters|bench scale --backends|bench scale --large")
 cairn_tier(test_app_TESTS "refuse|reject|bad scene|unknown|fails when|--version|cairn list|cairn make" "then cairn compare")
 cairn_tier(test_dem_TESTS "^$")       # no test name is empty: all physics
 cairn_tier(test_engines_TESTS "^$")

@@ -33,7 +33,7 @@ public:
         margin_ = scene_.run.contact_margin ? *scene_.run.contact_margin : 0.05 * min_edge;
         world_ = std::make_unique<dem::World>(scene_, margin_);
         world_->record_contacts(options.record_contacts);
-        contact_critical_ = dem::contact_critical_step(world_->blocks(), scene_.contact);
+        contact_critical_ = dem::contact_critical_step(world_->blocks(), scene_.contact, margin_);
         element_critical_ = dem::element_critical_step(world_->blocks());
         critical_ = contact_critical_;
         if (element_critical_ > 0.0 && (critical_ == 0.0 || element_critical_ < critical_)) critical_ = element_critical_;

@@ -4,6 +4,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "broad_phase.hpp"
+
 namespace cairn::dem {
 
 double side_contact_omega2(const Block& b, int side, const ContactLaw& law) {
@@ -48,17 +50,34 @@ double side_contact_omega2(const Block& b, int side, const ContactLaw& law) {
     return es.eigenvalues().maxCoeff();
 }
 
-double contact_critical_step(const std::vector<Block>& blocks, const ContactLaw& law) {
-    std::vector<double> per_block;
-    for (const auto& b : blocks) {
-        if (b.fixed) continue;
-        double w2 = 0.0;
-        for (int s = 0; s < 6; ++s) w2 = std::max(w2, side_contact_omega2(b, s, law));
-        per_block.push_back(w2);
+double contact_critical_step(const std::vector<Block>& blocks, const ContactLaw& law, double reach) {
+    // per free block: its stiffest side against a rigid base
+    std::vector<double> w2_of(blocks.size(), 0.0);
+    std::vector<double> free_w2;
+    for (size_t i = 0; i < blocks.size(); ++i) {
+        if (blocks[i].fixed) continue;
+        for (int s = 0; s < 6; ++s) w2_of[i] = std::max(w2_of[i], side_contact_omega2(blocks[i], s, law));
+        free_w2.push_back(w2_of[i]);
     }
-    if (per_block.empty()) return 0.0;
-    std::sort(per_block.rbegin(), per_block.rend());
-    double w2 = per_block[0] + (per_block.size() > 1 ? per_block[1] : 0.0);
+    if (free_w2.empty()) return 0.0;
+    double w2 = *std::max_element(free_w2.begin(), free_w2.end());   // a block alone on a base
+    if (reach < 0.0) {
+        std::sort(free_w2.rbegin(), free_w2.rend());
+        if (free_w2.size() > 1) w2 = free_w2[0] + free_w2[1];
+    } else {
+        // the pairs of free blocks whose grown boxes overlap (the broad phase, O(N))
+        std::vector<Aabb> boxes;
+        boxes.reserve(blocks.size());
+        for (const auto& b : blocks) {
+            Aabb a = b.bounds();
+            a.inflate(0.5 * reach);
+            boxes.push_back(a);
+        }
+        std::vector<std::pair<int, int>> pairs;
+        BroadPhase().overlapping_pairs(boxes, pairs);
+        for (const auto& [i, j] : pairs)
+            if (!blocks[i].fixed && !blocks[j].fixed) w2 = std::max(w2, w2_of[i] + w2_of[j]);
+    }
     if (!(w2 > 0.0)) return 0.0;
     double w = std::sqrt(w2);
     double zeta = 0.0;

@@ -7,6 +7,8 @@
 
 #include "dem/block_builder.hpp"
 #include "dem/time_step.hpp"
+#include "scene/scene_io.hpp"
+#include "scene/tower_builder.hpp"
 #include "support/scene_builder.hpp"
 #include "dem_test_util.hpp"
 
@@ -140,4 +142,64 @@ TEST_CASE("dem time step: a lumped hex8 cube's critical step is its uniform dila
         const double w = 2.0 / expected, zeta = 0.5 * 1e-5 * w;
         CHECK(dem::element_critical_step(damped) == Approx(2.0 / w * (std::sqrt(1.0 + zeta * zeta) - zeta)).epsilon(kEigenTol));
     }
+}
+
+TEST_CASE("dem time step: only blocks within reach pair up; apart, each is a mass on its springs", "[dem][time_step]") {
+    // ks = 0 on the overlap scheme: a cube's stiffest mode is the vertical k = kn·A on mass m,
+    // so alone on a base its critical step is the closed form 2·√(m/k); two free cubes on each
+    // other form springs in series of equal masses, ω² = 2k/m, so 2·√(m/2k)
+    const double kn = 3e7, k = kn * kArea;
+    const double alone = 2.0 * std::sqrt(kMass / k), paired = 2.0 * std::sqrt(kMass / (2.0 * k));
+    Scene stacked = test::stone_scene();
+    stacked.contact.scheme = ContactScheme::overlap;
+    stacked.contact.kn = kn;
+    stacked.contact.ks = 0.0;
+    Scene apart = stacked;
+    add_box(stacked, "A", Vec3(kEdge, kEdge, kEdge), Vec3(0, 0, 0.5 * kEdge), false);
+    add_box(stacked, "B", Vec3(kEdge, kEdge, kEdge), Vec3(0, 0, 1.5 * kEdge), false);
+    add_box(stacked, "base", Vec3(1, 1, 0.5), Vec3(0, 0, -0.25), true);
+    // two cubes 2 m apart, each on its own base: no pair within reach
+    add_box(apart, "A", Vec3(kEdge, kEdge, kEdge), Vec3(0, 0, 0.5 * kEdge), false);
+    add_box(apart, "B", Vec3(kEdge, kEdge, kEdge), Vec3(2, 0, 0.5 * kEdge), false);
+    add_box(apart, "baseA", Vec3(1, 1, 0.5), Vec3(0, 0, -0.25), true);
+    add_box(apart, "baseB", Vec3(1, 1, 0.5), Vec3(2, 0, -0.25), true);
+    for (Scene* s : {&stacked, &apart}) s->run.dt.reset();
+    CHECK(test::build_dem(stacked)->critical_step() == Approx(paired).epsilon(kEigenTol));
+    CHECK(test::build_dem(apart)->critical_step() == Approx(alone).epsilon(kEigenTol));
+    // without a reach every two free blocks pair up (the bound before blocks were located)
+    std::vector<dem::Block> blocks;
+    for (const auto& def : apart.blocks) blocks.push_back(dem::make_block(def, apart));
+    CHECK(dem::contact_critical_step(blocks, apart.contact) == Approx(paired).epsilon(kEigenTol));
+    CHECK(dem::contact_critical_step(blocks, apart.contact, 0.05 * kEdge) == Approx(alone).epsilon(kEigenTol));
+}
+
+TEST_CASE("dem time step: the paper's scenes keep the step of the all-pairs bound", "[dem][time_step]") {
+    // each holds one free block, or free blocks that touch: the stiffest pair is within reach
+    for (const char* name : {"friction_slide", "friction_stick", "friction_stick_base", "impact", "impact_damped",
+                             "rocking", "rocking_damped_02", "rocking_damped_04", "rocking_housner", "rocking_slender",
+                             "rolling", "stability"}) {
+        INFO(name);
+        Scene s = load_scene(std::string(CAIRN_SOURCE_DIR) + "/scenarios/paper/" + name + ".toml", {});
+        std::vector<dem::Block> blocks;
+        for (const auto& def : s.blocks) blocks.push_back(dem::make_block(def, s));
+        s.run.dt.reset();
+        CHECK(test::build_dem(s)->critical_step() == Approx(dem::contact_critical_step(blocks, s.contact)).epsilon(kEigenTol));
+    }
+}
+
+TEST_CASE("dem time step: a tower of equal bricks keeps the all-pairs step", "[dem][time_step]") {
+    // every brick of `cairn make tower` has the same stiffest side and touches an equal one,
+    // so the stiffest pair within reach is the pair of the two largest values anywhere
+    Scene s = test::stone_scene();
+    s.contact.scheme = ContactScheme::overlap;
+    s.contact.subdivision = 1;
+    TowerSpec t;
+    t.length = t.width = 4;
+    t.courses = 6;
+    add_tower(s, t);
+    std::vector<dem::Block> blocks;
+    for (const auto& def : s.blocks) blocks.push_back(dem::make_block(def, s));
+    const double all_pairs = dem::contact_critical_step(blocks, s.contact);
+    s.run.dt.reset();
+    CHECK(test::build_dem(s)->critical_step() == Approx(all_pairs).epsilon(kEigenTol));
 }
