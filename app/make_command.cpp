@@ -100,9 +100,9 @@ const std::vector<Param>& common_params() {
         {"kn", "1e9", Unit::stiffness, "normal contact stiffness per area, N/m³ (= ks)"},
         {"friction", "0.7", Unit::ratio, "Coulomb friction coefficient"},
         {"damping-ratio", "0.1", Unit::ratio, "contact damping ratio ζ"},
-        {"scheme", "paper", Unit::choice,
+        {"scheme", "overlap", Unit::choice,
          "contact scheme of the in-house engine: paper (hitting points) or overlap (integrated over each face)"},
-        {"subdivision", "4", Unit::count, "overlap scheme: sub-contacts per edge of a face, 1 to 16"},
+        {"subdivision", "1", Unit::count, "overlap scheme: sub-contacts per edge of a face, 1 to 16"},
         {"duration", "1s", Unit::time, "simulated time"},
     };
     return params;

@@ -46,6 +46,7 @@ struct SubAnchor {
 struct SubForce {
     NodeWeights hit, target;    ///< where it acts on each block
     Vec3 force = Vec3::Zero();  ///< on the hitting block (the target takes −force), N
+    Vec3 normal = Vec3::UnitZ();///< the target face's outward unit normal
 };
 
 /// Energies and counts of one contact evaluation.

@@ -179,7 +179,7 @@ void ContactSet::evaluate_overlap(std::vector<Block>& blocks, double dt, long be
                             anchor->fds = fds;
                             const Vec3 force = fn * nt + fs;
                             if (keep_forces) {
-                                c.sub_forces.push_back({wh, wt, force});
+                                c.sub_forces.push_back({wh, wt, force, nt});
                             } else {
                                 wh.add(hb, force);
                                 wt.add(tb, -force);

@@ -234,3 +234,35 @@ TEST_CASE("a block loaded below the Coulomb limit with part of its base lifted h
         CHECK(std::abs(late - early) < 0.05 * elastic);
     }
 }
+
+TEST_CASE("the overlap scheme's reported contact points carry a resting cube's weight", "[dem][contact]") {
+    // a 1 m cube pressed into a fixed slab: every sub-contact is reported on the cube's bottom
+    // face with the slab's normal, and their forces add up to the one evaluation's resultant
+    for (int n : {1, 3}) {
+        Scene s = overlap_scene();
+        s.contact.subdivision = n;
+        s.contact.kn = s.contact.ks = 1e9;
+        s.contact.damping_rule = ContactDampingRule::none;   // the spring alone
+        test::add_box(s, "A", Vec3(1, 1, 1), Vec3(0, 0, 0.5 - 1e-5), false);
+        test::add_box(s, "B", Vec3(2, 2, 0.5), Vec3(0, 0, -0.25), true);
+        auto b = dem_backend_info().make();
+        RunOptions options;
+        options.record_contacts = true;
+        b->build(s, options);
+        REQUIRE(b->step() == StepStatus::ok);
+        const auto points = b->contact_points();
+        CAPTURE(n, points.size());
+        CHECK(points.size() == size_t(n * n));
+        double up = 0.0;
+        for (const auto& c : points) {
+            CHECK(c.normal.isApprox(Vec3::UnitZ(), 1e-12));
+            CHECK(std::abs(c.position.z()) <= 2e-5);   // where both blocks take it: between the two faces
+            CHECK(std::abs(c.position.x()) <= 0.5 + 1e-12);
+            CHECK(std::abs(c.position.y()) <= 0.5 + 1e-12);
+            up += c.normal_force.z();
+        }
+        // kn·A·d over the whole face (A = 1 m², d the cube's depth after the step), to rounding
+        const double depth = 0.5 - b->sample().blocks[0].position.z();
+        CHECK(up == Approx(1e9 * depth).epsilon(1e-9));
+    }
+}
