@@ -86,12 +86,18 @@ Judgement stack_judge(const Scene& scene, const std::vector<Sample>& s) {
 
 std::vector<StabilityConfig> stability_configs(const std::string& backend, const std::string& dir,
                                                const std::vector<BackendInfo>& backends, long long long_steps) {
-    const bool dem = backend == "dem";
+    const BackendInfo& info = find_backend(backends, backend);
+    const bool dem = info.contact == ContactModel::penalty;
     const std::string matched = dem ? "rigid" : "matched";
+    // a rigid-contact engine with no spring stand-in (no penalty stiffness in its capability row)
+    // has no matched mode
+    bool springs = dem;
+    for (const auto& f : info.capabilities)
+        if (f.feature == Feature::penalty_stiffness && f.support != Support::none) springs = true;
     std::vector<StabilityConfig> out;
     auto add = [&](const std::string& param, const std::string& text, double value, Scene scene,
                    const std::string& mode, auto judge) {
-        if (mode == "matched" && backend == "siconos") return;   // rigid (non-smooth) contact only
+        if (mode == "matched" && !springs) return;
         StabilityConfig c;
         c.point.backend = backend;
         c.point.parameter = param;
