@@ -9,28 +9,26 @@ std::vector<ContactPoint> World::contact_points() const {
     for (const auto& c : contacts_.candidates()) {
         const Block& hb = blocks_[c.hit_block];
         const Block& tb = blocks_[c.target_block];
-        for (const auto& p : c.forces) {
+        // a force on the hitting block at `position`, split along the target face's outward normal
+        auto add = [&](const Vec3& position, const Vec3& normal, const Vec3& force) {
             ContactPoint cp;
-            // the hitting point on the hitting block's face; the target face's outward normal
-            cp.position = quad_point(hb.face_quad(c.hit_face), hb.hits[c.hit_face][p.point].xi);
-            cp.normal = quad_normal(tb.face_quad(p.target_face), p.target_xi);
-            cp.normal_force = p.force.dot(cp.normal) * cp.normal;
-            cp.shear_force = p.force - cp.normal_force;
+            cp.position = position;
+            cp.normal = normal;
+            cp.normal_force = force.dot(normal) * normal;
+            cp.shear_force = force - cp.normal_force;
             cp.block_a = c.hit_block;
             cp.block_b = c.target_block;
             out.push_back(cp);
-        }
+        };
+        // paper scheme: the hitting point on the hitting block's face
+        for (const auto& p : c.forces)
+            add(quad_point(hb.face_quad(c.hit_face), hb.hits[c.hit_face][p.point].xi),
+                quad_normal(tb.face_quad(p.target_face), p.target_xi), p.force);
         // overlap scheme: each sub-contact at its point of action on the hitting block
         for (const auto& p : c.sub_forces) {
-            ContactPoint cp;
-            cp.position = Vec3::Zero();
-            for (int i = 0; i < p.hit.count; ++i) cp.position += p.hit.w[i] * hb.x[p.hit.node[i]];
-            cp.normal = p.normal;
-            cp.normal_force = p.force.dot(cp.normal) * cp.normal;
-            cp.shear_force = p.force - cp.normal_force;
-            cp.block_a = c.hit_block;
-            cp.block_b = c.target_block;
-            out.push_back(cp);
+            Vec3 position = Vec3::Zero();
+            for (int i = 0; i < p.hit.count; ++i) position += p.hit.w[i] * hb.x[p.hit.node[i]];
+            add(position, p.normal, p.force);
         }
     }
     return out;

@@ -91,9 +91,7 @@ std::vector<StabilityConfig> stability_configs(const std::string& backend, const
     const std::string matched = dem ? "rigid" : "matched";
     // a rigid-contact engine with no spring stand-in (no penalty stiffness in its capability row)
     // has no matched mode
-    bool springs = dem;
-    for (const auto& f : info.capabilities)
-        if (f.feature == Feature::penalty_stiffness && f.support != Support::none) springs = true;
+    const bool springs = dem || support_of(info, Feature::penalty_stiffness) != Support::none;
     std::vector<StabilityConfig> out;
     auto add = [&](const std::string& param, const std::string& text, double value, Scene scene,
                    const std::string& mode, auto judge) {

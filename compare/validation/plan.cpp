@@ -21,16 +21,6 @@ const std::vector<std::string>& paper_cases() {
     return names;
 }
 
-namespace {
-
-Support support_of(const BackendInfo& b, Feature f) {
-    for (const auto& c : b.capabilities)
-        if (c.feature == f) return c.support;
-    return Support::none;
-}
-
-}  // namespace
-
 std::vector<Variant> backend_variants(const BackendInfo& b, const std::vector<std::string>& modes) {
     std::vector<Variant> out;
     if (b.contact == ContactModel::penalty) {

@@ -4,6 +4,12 @@
 
 namespace cairn {
 
+Support support_of(const BackendInfo& backend, Feature feature) {
+    for (const auto& f : backend.capabilities)
+        if (f.feature == feature) return f.support;
+    return Support::none;
+}
+
 const BackendInfo& find_backend(const std::vector<BackendInfo>& list, const std::string& name) {
     std::string names;
     for (const auto& b : list) {

@@ -40,6 +40,9 @@ struct BackendInfo {
     BlockInertia block_inertia;
 };
 
+/// how `backend` represents `feature` (its capability row; none when the row does not name it)
+Support support_of(const BackendInfo& backend, Feature feature);
+
 /// the facts named `name` in `list`; throws cairn::Error naming the available ones otherwise
 const BackendInfo& find_backend(const std::vector<BackendInfo>& list, const std::string& name);
 
