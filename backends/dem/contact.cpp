@@ -14,6 +14,10 @@
 
 namespace cairn::dem {
 
+namespace {
+constexpr size_t kParallelContactWork = 30000;   // hitting points: see ContactSet::apply
+}  // namespace
+
 void ContactSet::configure(const ContactLaw& law, double margin) {
     law_ = law;
     margin_ = margin;
@@ -73,12 +77,14 @@ ContactTotals ContactSet::apply(std::vector<Block>& blocks, double dt) {
     frames_.resize(blocks.size());
     for (size_t i = 0; i < blocks.size(); ++i) frames_[i] = SideFrames::of(blocks[i]);
     const long count = long(candidates_.size());
-    // below a thousand hitting points a parallel region costs more than it saves (a single block
-    // on its base has a few hundred): one thread then spreads the forces as it goes
-    size_t points = 0;
+    // the step's contact work in hitting points; an overlap sub-contact (clipping and integration)
+    // costs about 8 of them. Below kParallelContactWork a parallel region costs more than it saves
+    // (libgomp's threads sleep between steps and the wake-up outweighs the split; measured on
+    // generated walls, docs/dem.md): one thread then spreads the forces as it goes
+    size_t work = 0;
     const size_t cells = size_t(law_.subdivision) * size_t(law_.subdivision);
-    for (const auto& c : candidates_) points += law_.scheme == ContactScheme::paper ? c.anchors.size() : cells;
-    if (points >= 1000) {
+    for (const auto& c : candidates_) work += law_.scheme == ContactScheme::paper ? c.anchors.size() : 8 * cells;
+    if (work >= kParallelContactWork) {
 #pragma omp parallel
         {
             long lo = 0, hi = count;

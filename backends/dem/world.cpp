@@ -11,7 +11,7 @@ namespace cairn::dem {
 namespace {
 
 // below this many blocks a parallel region over the blocks costs more than it saves
-constexpr long kParallelBlocks = 256;
+constexpr long kParallelBlocks = 2048;
 
 }  // namespace
 
