@@ -11,6 +11,7 @@
 #include <stdexcept>
 
 #include "error.hpp"
+#include "output/dir_lock.hpp"
 #include "output/durable.hpp"
 
 namespace fs = std::filesystem;
@@ -75,6 +76,7 @@ StagedDir::StagedDir(const std::string& final_dir, bool replace) {
         if (ec) throw Error("output directory " + final_dir + ": " + ec.message());
     }
     final_ = p;
+    lock_ = std::make_unique<DirLock>(final_);   // before any check: another writer's DIR is not ours to judge
     const auto st = fs::symlink_status(final_, ec);
     if (fs::exists(st)) {
         if (!fs::is_directory(st))
@@ -95,7 +97,7 @@ StagedDir::StagedDir(const std::string& final_dir, bool replace) {
     if (fs::is_directory(st)) fs::permissions(staging_, st.permissions(), ec);   // DIR keeps its mode
 }
 
-StagedDir::~StagedDir() { discard(); }
+StagedDir::~StagedDir() { discard(); }   // then lock_ is released
 
 void StagedDir::discard() {
     if (done_) return;

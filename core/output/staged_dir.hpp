@@ -3,20 +3,25 @@
 /// which is fsynced and then swapped with DIR in one rename (Linux renameat2 RENAME_EXCHANGE), so
 /// that DIR holds either the old complete result or the new complete result, whenever the process
 /// stops. The old content is removed after the swap; staging siblings left by killed processes
-/// are removed by the next StagedDir on the same DIR.
+/// are removed by the next StagedDir on the same DIR. DIR is locked while a StagedDir lives
+/// (output/dir_lock.hpp): a second cairn process writing the same DIR is refused at once.
 
 #include <filesystem>
+#include <memory>
 #include <string>
 #include <vector>
 
 namespace cairn {
+
+class DirLock;
 
 class StagedDir {
 public:
     /// check, before any work, that `final_dir` may receive results and create the staging
     /// sibling: `final_dir` must be absent, or a directory that is empty or may be replaced
     /// (`replace`, from --force); missing parents are created. Throws cairn::Error naming the
-    /// directory when it cannot be written (the staging directory cannot be created) or is refused.
+    /// directory when it cannot be written (the staging directory cannot be created), is refused,
+    /// or is being written by another process.
     StagedDir(const std::string& final_dir, bool replace);
     /// removes the staging directory unless committed
     ~StagedDir();
@@ -49,6 +54,7 @@ public:
 private:
     std::filesystem::path final_;
     std::filesystem::path staging_;
+    std::unique_ptr<DirLock> lock_;   ///< held from the checks to the end
     bool done_ = false;
 };
 

@@ -148,3 +148,44 @@ TEST_CASE("a staged directory given as a symbolic link replaces the directory it
     CHECK(get(root / "real" / "a.txt") == "new\n");
     CHECK(names(root) == std::vector<std::string>{"link", "real"});
 }
+
+TEST_CASE("a directory being written by another process is refused at once, then free when it ends", "[output]") {
+    const fs::path dir = scratch("locked") / "run";
+    int ready[2], release[2];
+    REQUIRE(::pipe(ready) == 0);
+    REQUIRE(::pipe(release) == 0);
+    const pid_t child = ::fork();
+    REQUIRE(child >= 0);
+    if (child == 0) {   // the other writer: holds DIR until told to end
+        char c = 0;
+        try {
+            StagedDir s(dir.string(), true);
+            (void)!::write(ready[1], "y", 1);
+            (void)!::read(release[0], &c, 1);
+        } catch (...) {
+            (void)!::write(ready[1], "n", 1);
+        }
+        ::_exit(0);
+    }
+    char c = 0;
+    REQUIRE(::read(ready[0], &c, 1) == 1);
+    REQUIRE(c == 'y');
+    CHECK_THROWS_WITH(StagedDir(dir.string(), true),
+                      Contains("being written by another cairn process") && Contains("pid " + std::to_string(child)));
+    REQUIRE(::write(release[1], "x", 1) == 1);
+    int status = 0;
+    REQUIRE(::waitpid(child, &status, 0) == child);
+    for (int fd : {ready[0], ready[1], release[0], release[1]}) ::close(fd);
+    StagedDir s(dir.string(), true);   // the kernel dropped the lock with the process
+    put(s.path() / "a.txt", "mine\n");
+    s.commit();
+    CHECK(get(dir / "a.txt") == "mine\n");
+}
+
+TEST_CASE("one command cannot write one directory twice at once", "[output]") {
+    const fs::path dir = scratch("twice") / "run";
+    StagedDir first(dir.string(), true);
+    CHECK_THROWS_WITH(StagedDir(dir.string(), true), Contains("already being written by this command"));
+    const fs::path other = scratch("twice") / "other";
+    CHECK_NOTHROW(StagedDir(other.string(), true));   // another directory is free
+}
