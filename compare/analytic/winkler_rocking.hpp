@@ -4,9 +4,9 @@
 /// bed of vertical springs kn per unit area (N/m³) under every part of the block's lower surface
 /// that lies below its top (the bottom face, and the side face of a sunken corner), each pressing
 /// kn·max(d, 0) with d the depth below the top: over a face d is affine, so the force, its centre
-/// and the stored energy are closed form. Shear: one elastic-then-Coulomb spring ks·A per face (or cell) in
-/// contact (A its contact area), its offset grown by the tangential velocity at the face's pressure
-/// centre and kept at constant energy as A changes; dashpots as dem's contact damping ratio. The
+/// and the stored energy are closed form. Shear: one elastic-then-Coulomb spring ks·A per face (or
+/// cell) in contact (A its contact area), its offset grown by the tangential velocity at the face's
+/// pressure centre and kept at constant energy as A changes; dashpots as dem's contact damping ratio. The
 /// block has 3 degrees of freedom (x, z, θ), integrated by RK4 at a fixed fraction of the stiffest
 /// contact period, independently of any engine. Each face may be cut into equal cells, each with
 /// its own pressure centre, dashpot and shear spring (dem's sub-contacts: the normal force and its
