@@ -46,9 +46,8 @@ oracle::WinklerRocking winkler_block(const Scene& scene, ContactKind contact) {
 
 double release_tilt(const Scene& scene) { return scene.reference->values.at("theta0"); }
 
-std::vector<double> winkler_curve(const Scene& scene, ContactKind contact, const std::vector<double>& t) {
-    if (t.empty() || !unmodelled(scene, contact).empty()) return {};
-    const auto tr = winkler_block(scene, contact).rock(release_tilt(scene), t.back() + 1e-9, 1e-3);
+/// θ of the oracle's samples at the given ascending times, linear between them (rad)
+std::vector<double> angles_at(const oracle::WinklerTrace& tr, const std::vector<double>& t) {
     std::vector<double> out;
     size_t j = 0;
     for (double x : t) {
@@ -58,6 +57,11 @@ std::vector<double> winkler_curve(const Scene& scene, ContactKind contact, const
         out.push_back(tr.theta[j] + f * (tr.theta[j + 1] - tr.theta[j]));
     }
     return out;
+}
+
+std::vector<double> winkler_curve(const Scene& scene, ContactKind contact, const std::vector<double>& t) {
+    if (t.empty() || !unmodelled(scene, contact).empty()) return {};
+    return angles_at(winkler_block(scene, contact).rock(release_tilt(scene), t.back() + 1e-9, 1e-3), t);
 }
 
 CaseAnalysis analyse_winkler(const Scene& scene, const std::vector<Sample>& s, ContactKind contact) {
@@ -80,7 +84,7 @@ CaseAnalysis analyse_winkler(const Scene& scene, const std::vector<Sample>& s, C
         return out;
     }
     const auto tr = winkler_block(scene, contact).rock(th0, th.t.back() + 1e-9, 1e-3);
-    out.analytic = winkler_curve(scene, contact, th.t);
+    out.analytic = angles_at(tr, th.t);
     out.analytic_key = "Winkler base";
     out.analytic_label = "rigid block on a no-tension Winkler base of modulus kn (shear springs and dashpots as dem's, "
                          "per sub-contact), integrated independently";
