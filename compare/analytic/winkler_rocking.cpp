@@ -10,7 +10,7 @@ namespace cairn::oracle {
 
 namespace {
 
-constexpr int kMaxCells = 96;   // contact cells of the three lower faces together
+constexpr int kMaxCells = WinklerRocking::max_cells;   // contact cells of the three lower faces together
 
 // the state: centre (m), rotation (rad), their rates, each face's shear state Q = u·√A (m²) and
 // the energy dissipated by the dashpots (J)

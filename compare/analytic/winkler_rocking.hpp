@@ -41,6 +41,7 @@ struct WinklerRocking {
     /// c = 2ζ√(kn·m/A_side) per unit area (A_side the whole face's area, A_c its part in contact);
     /// shear 2ζ√(ks·m/A_side) while sticking; the normal force never pulls
     double zeta = 0.0;
+    static constexpr int max_cells = 96;   ///< bound on cells_across + 2·cells_up
     int cells_across = 1;          ///< cells of the bottom face across the axis (dem: divisions × subdivision)
     int cells_up = 1;              ///< cells of each side face up its height
     /// RK4 steps per period 2π/ω of the stiffest contact mode (all lower faces pressed, bounded

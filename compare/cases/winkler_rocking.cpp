@@ -15,16 +15,6 @@ namespace cairn::cases {
 
 namespace {
 
-/// why a variant has no reference here, or empty when the oracle models it
-std::string unmodelled(const Scene& scene, ContactKind contact) {
-    if (!contact.penalty) return "rigid contact: Housner's rigid base (shown), not a Winkler bed";
-    if (!contact.point_springs) return "an engine's matched contact reproduces kn·A of a face, not the Winkler integral under a pivoting corner";
-    if (scene.contact.scheme != ContactScheme::overlap)
-        return "the paper scheme lumps kn on grid points (an edge row's stiffness set by the grid), not the Winkler integral";
-    if (scene.contact.damping_rule == ContactDampingRule::time) return "the oracle carries dashpots by damping ratio, not by damping time";
-    return "";
-}
-
 /// the oracle of the scene's reference block: its extent across the axis, up and along the axis,
 /// its faces cut as dem cuts them (mesh divisions × the overlap sub-division)
 oracle::WinklerRocking winkler_block(const Scene& scene, ContactKind contact) {
@@ -42,6 +32,20 @@ oracle::WinklerRocking winkler_block(const Scene& scene, ContactKind contact) {
     w.cells_across = div_across * scene.contact.subdivision;
     w.cells_up = contact.divisions[2] * scene.contact.subdivision;
     return w;
+}
+
+/// why a variant has no reference here, or empty when the oracle models it
+std::string unmodelled(const Scene& scene, ContactKind contact) {
+    if (!contact.penalty) return "rigid contact: Housner's rigid base (shown), not a Winkler bed";
+    if (!contact.point_springs) return "an engine's matched contact reproduces kn·A of a face, not the Winkler integral under a pivoting corner";
+    if (scene.contact.scheme != ContactScheme::overlap)
+        return "the paper scheme lumps kn on grid points (an edge row's stiffness set by the grid), not the Winkler integral";
+    if (scene.contact.damping_rule == ContactDampingRule::time) return "the oracle carries dashpots by damping ratio, not by damping time";
+    const auto w = winkler_block(scene, contact);
+    if (w.cells_across + 2 * w.cells_up > oracle::WinklerRocking::max_cells)
+        return "the mesh times the sub-division cuts the faces finer than the oracle's " +
+               std::to_string(oracle::WinklerRocking::max_cells) + " cells";
+    return "";
 }
 
 double release_tilt(const Scene& scene) { return scene.reference->values.at("theta0"); }
