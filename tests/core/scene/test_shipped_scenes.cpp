@@ -30,7 +30,8 @@ TEST_CASE("every shipped scene validates, and exactly the listed scenes ship", "
         "earthquake/column_elcentro.toml", "paper/friction_slide.toml",  "paper/friction_stick.toml",
         "paper/friction_stick_base.toml",  "paper/impact.toml",          "paper/impact_damped.toml",
         "paper/rocking.toml",              "paper/rocking_damped_02.toml", "paper/rocking_damped_04.toml",
-        "paper/rocking_housner.toml",      "paper/rocking_slender.toml", "paper/rolling.toml",
+        "paper/rocking_housner.toml",      "paper/rocking_slender.toml", "paper/rocking_winkler.toml",
+        "paper/rolling.toml",
         "paper/stability.toml",            "structures/arch.toml",       "structures/arch_thick.toml",
         "structures/arch_thin.toml",       "structures/column_pushover.toml", "structures/wall_pushover.toml"};
     CHECK(found == shipped);
