@@ -192,6 +192,7 @@ void MujocoBackend::build(const Scene& scene, const RunOptions& options) {
     }
     install_hexahedron_collider();
     hexahedra_.model = m_;
+    hexahedra_.boxes = matched_;
     hexahedra_.geom_block.assign(m_->ngeom, nullptr);
     for (int g = 0; g < m_->ngeom; ++g)
         if (geom_block_[g] >= 0) hexahedra_.geom_block[g] = &blocks_[geom_block_[g]];
@@ -301,9 +302,11 @@ PointSpring MujocoBackend::pair_spring(const mjContact& c) const {
 
 double MujocoBackend::depth_scale(const mjContact& c) const {
     // MuJoCo 2.2.2's box-box collider reports half the overlap as the contact distance (a 0.5 mm
-    // overlap gives dist = -0.25 mm; mesh pairs give the full overlap) while the row's velocity is
-    // the full approach speed: the spring on dist needs twice the stiffness
-    return m_->geom_type[c.geom1] == mjGEOM_BOX && m_->geom_type[c.geom2] == mjGEOM_BOX ? 2.0 : 1.0;
+    // overlap gives dist = -0.25 mm; cairn's collider gives the full overlap) while the row's
+    // velocity is the full approach speed: the spring on dist needs twice the stiffness
+    const bool own_box_box = m_->geom_type[c.geom1] == mjGEOM_BOX && m_->geom_type[c.geom2] == mjGEOM_BOX &&
+                             !hexahedra_.boxes;
+    return own_box_box ? 2.0 : 1.0;
 }
 
 void MujocoBackend::calibrate_contacts() {
