@@ -46,10 +46,14 @@ protected:
             btPersistentManifold* pm = d->getManifoldByIndexInternal(m);
             const auto& a = (*blocks)[pm->getBody0()->getUserIndex()];
             const auto& b = (*blocks)[pm->getBody1()->getUserIndex()];
-            PointSpring s;
-            if (law.matched) s = a.fixed ? matched_point_spring(*scene, b, &a) : matched_point_spring(*scene, a, &b);
+            // block frame → world: Bullet's body frame is the block's principal axes
+            const Quat qa = eig(pm->getBody0()->getWorldTransform().getRotation()) * Quat(a.principal.transpose());
+            const Quat qb = eig(pm->getBody1()->getWorldTransform().getRotation()) * Quat(b.principal.transpose());
             for (int i = 0; i < pm->getNumContacts(); ++i) {
                 btManifoldPoint& p = pm->getContactPoint(i);
+                PointSpring s;
+                // the point's normal points from body 1 to body 0
+                if (law.matched) s = matched_point_spring(*scene, a, qa, b, qb, -eig(p.m_normalWorldOnB));
                 p.m_combinedFriction = law.friction;
                 p.m_combinedRestitution = law.restitution;
                 p.m_combinedRollingFriction = 0.0;

@@ -297,7 +297,10 @@ StepStatus MujocoBackend::step() {
 PointSpring MujocoBackend::pair_spring(const mjContact& c) const {
     const RigidBlock& a = blocks_[geom_block_[c.geom1]];
     const RigidBlock& b = blocks_[geom_block_[c.geom2]];
-    return a.fixed ? matched_point_spring(scene_, b, &a) : matched_point_spring(scene_, a, &b);
+    auto block_orientation = [&](const RigidBlock& x) { return x.fixed ? x.orientation : orientation(body_[x.index]); };
+    // MuJoCo's normal points from geom 1 to geom 2
+    const Vec3 n(c.frame[0], c.frame[1], c.frame[2]);
+    return matched_point_spring(scene_, a, block_orientation(a), b, block_orientation(b), n);
 }
 
 double MujocoBackend::depth_scale(const mjContact& c) const {

@@ -345,9 +345,12 @@ void OdeBackend::collide(dGeomID ga, dGeomID gb) {
         }
     }
     if (n == 0) return;
-    PointSpring s;
-    if (matched_) s = a.fixed ? matched_point_spring(scene_, b, &a) : matched_point_spring(scene_, a, &b);
+    const Quat qa = orientation(int(a.index)), qb = orientation(int(b.index));
     for (int i = 0; i < n; ++i) {
+        PointSpring s;
+        // ODE's normal points into geom 1 (block a)
+        const Vec3 normal(c[i].geom.normal[0], c[i].geom.normal[1], c[i].geom.normal[2]);
+        if (matched_) s = matched_point_spring(scene_, a, qa, b, qb, -normal);
         dSurfaceParameters& sp = c[i].surface;
         sp.mode = dContactApprox1;
         sp.mu = scene_.contact.friction;
