@@ -226,7 +226,7 @@ void BulletBackend::build(const Scene& scene, const RunOptions& options) {
     n << "margin: " << margin << " m (inside box half extents; hulls use their corners)";
     note(n.str());
     if (matched_)
-        note("matched contact: kn*A/4 per manifold point (A = smaller bottom-face area of the pair), "
+        note("matched contact: kn*A/4 per manifold point (A = smaller area of the two faces most aligned with the contact normal), "
              "erp = h*k/(h*k+c), cfm = 1/(h*k+c), split impulse off");
     else
         note("rigid contact: split impulse on with threshold 0 (no Baumgarte rebound), restitution " +

@@ -224,11 +224,14 @@ void MujocoBackend::build(const Scene& scene, const RunOptions& options) {
     note(n);
     if (matched_)
         n << "matched contact: direct solref (-k, -b) set on every contact after collision from its pair: "
-             "kn*A/4 and c/4 per contact (A = smaller bottom-face area, c from the pair's reduced mass) "
-             "times MuJoCo's (1-d)*invweight of the two bodies, impedance d " << p.impedance
+             "kn*A/4 and c/4 per contact (A = smaller area of the two faces most aligned with the contact "
+             "normal, c from the pair's reduced mass) times MuJoCo's (1-d)*invweight of the two bodies, "
+             "impedance d " << p.impedance
           << " (static penetration exact, period of kn*A long by about " << 2.0 * p.impedance / (1.0 - p.impedance) * 100
           << " %); friction rows impedance " << kFrictionImpedance << " (impratio " << p.impratio
-          << ") and damping " << friction_damping_ << " 1/s";
+          << ") and damping " << friction_damping_ << " 1/s; box-box pairs through cairn's face-clipping "
+             "collider (MuJoCo 2.2.2's box-box collider gives duplicate and phantom deep points for equal "
+             "boxes face on face)";
     else
         n << "rigid contact: solref " << p.solref[0] << " " << p.solref[1] << ", solimp " << p.impedance << " "
           << p.impedance << " 0.001";

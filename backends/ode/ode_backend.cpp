@@ -249,7 +249,7 @@ void OdeBackend::build(const Scene& scene, const RunOptions& options) {
       << (stepper == "auto" ? " (auto: dWorldStep up to 10 free blocks)" : "");
     note(n);
     if (matched_)
-        n << "matched contact: kn*A/4 per contact (A = smaller bottom-face area of the pair) as soft_erp = "
+        n << "matched contact: kn*A/4 per contact (A = smaller area of the two faces most aligned with the contact normal) as soft_erp = "
              "h*k/(h*k+c), soft_cfm = 1/(h*k+c); no correcting-velocity cap";
     else
         n << "rigid contact: erp " << erp << ", cfm " << cfm << ", contact max correcting velocity "
