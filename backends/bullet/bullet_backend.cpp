@@ -46,10 +46,14 @@ protected:
             btPersistentManifold* pm = d->getManifoldByIndexInternal(m);
             const auto& a = (*blocks)[pm->getBody0()->getUserIndex()];
             const auto& b = (*blocks)[pm->getBody1()->getUserIndex()];
-            PointSpring s;
-            if (law.matched) s = a.fixed ? matched_point_spring(*scene, b, &a) : matched_point_spring(*scene, a, &b);
+            // block frame → world: Bullet's body frame is the block's principal axes
+            const Quat qa = eig(pm->getBody0()->getWorldTransform().getRotation()) * Quat(a.principal.transpose());
+            const Quat qb = eig(pm->getBody1()->getWorldTransform().getRotation()) * Quat(b.principal.transpose());
             for (int i = 0; i < pm->getNumContacts(); ++i) {
                 btManifoldPoint& p = pm->getContactPoint(i);
+                PointSpring s;
+                // the point's normal points from body 1 to body 0
+                if (law.matched) s = matched_point_spring(*scene, a, qa, b, qb, -eig(p.m_normalWorldOnB));
                 p.m_combinedFriction = law.friction;
                 p.m_combinedRestitution = law.restitution;
                 p.m_combinedRollingFriction = 0.0;
@@ -222,7 +226,7 @@ void BulletBackend::build(const Scene& scene, const RunOptions& options) {
     n << "margin: " << margin << " m (inside box half extents; hulls use their corners)";
     note(n.str());
     if (matched_)
-        note("matched contact: kn*A/4 per manifold point (A = smaller bottom-face area of the pair), "
+        note("matched contact: kn*A/4 per manifold point (A = smaller area of the two faces most aligned with the contact normal), "
              "erp = h*k/(h*k+c), cfm = 1/(h*k+c), split impulse off");
     else
         note("rigid contact: split impulse on with threshold 0 (no Baumgarte rebound), restitution " +

@@ -15,6 +15,14 @@ double face_area(const Corners& c, int face) {
     return 0.5 * (c[f[2]] - c[f[0]]).cross(c[f[3]] - c[f[1]]).norm();
 }
 
+// outward unit normal of a face (from its diagonals; away from the block's centroid)
+Vec3 face_normal(const Corners& c, int face, const Vec3& centroid) {
+    const auto& f = kFaceCorners[face];
+    Vec3 n = (c[f[2]] - c[f[0]]).cross(c[f[3]] - c[f[1]]).normalized();
+    Vec3 mid = 0.25 * (c[f[0]] + c[f[1]] + c[f[2]] + c[f[3]]);
+    return n.dot(mid - centroid) < 0 ? Vec3(-n) : n;
+}
+
 // true when the corners are an axis-aligned box centred on `centre`
 bool axis_aligned_box(const Corners& c, Vec3& centre, Vec3& half) {
     centre = Vec3::Zero();
@@ -63,7 +71,12 @@ std::vector<RigidBlock> rigid_blocks(const Scene& scene, const std::string& back
             if (b.principal.determinant() < 0) b.principal.col(2) *= -1.0;
             b.moments = eig.eigenvalues();
         }
-        b.bearing_area = face_area(d.corners, 0);
+        Vec3 centroid = Vec3::Zero();
+        for (const Vec3& p : d.corners) centroid += p / 8.0;
+        for (int f = 0; f < 6; ++f) {
+            b.face_areas[f] = face_area(d.corners, f);
+            b.face_normals[f] = face_normal(d.corners, f, centroid);
+        }
         b.orientation = d.orientation.normalized();
         b.com_world = d.position + b.orientation * b.com;
         out.push_back(b);
@@ -85,13 +98,24 @@ double potential_energy(const RigidBlock& b, const Vec3& gravity, const Vec3& co
     return -b.mass * gravity.dot(com_world);
 }
 
-PointSpring matched_point_spring(const Scene& scene, const RigidBlock& a, const RigidBlock* b,
-                                 int points) {
-    const bool b_moves = b && !b->fixed;
-    double area = b ? std::min(a.bearing_area, b->bearing_area) : a.bearing_area;
+double bearing_area(const RigidBlock& b, const Quat& q, const Vec3& out) {
+    const Vec3 local = q.conjugate() * out;
+    double best = -2.0;
+    for (const Vec3& n : b.face_normals) best = std::max(best, n.dot(local));
+    double area = 0.0;
+    for (int f = 0; f < 6; ++f)
+        if (b.face_normals[f].dot(local) >= best - 1e-9 && (area == 0.0 || b.face_areas[f] < area))
+            area = b.face_areas[f];
+    return area;
+}
+
+PointSpring matched_point_spring(const Scene& scene, const RigidBlock& a, const Quat& qa, const RigidBlock& b,
+                                 const Quat& qb, const Vec3& n, int points) {
+    double area = std::min(bearing_area(a, qa, n), bearing_area(b, qb, -n));
     double k = scene.contact.kn * area;
-    double m = b_moves ? a.mass * b->mass / (a.mass + b->mass) : a.mass;
-    if (a.fixed && b_moves) m = b->mass;
+    double m = a.mass * b.mass / (a.mass + b.mass);
+    if (a.fixed) m = b.mass;
+    if (b.fixed) m = a.mass;
     double c = 0.0;
     switch (scene.contact.damping_rule) {
         case ContactDampingRule::none: break;

@@ -2,6 +2,7 @@
 /// Scene blocks as rigid bodies for the reference engines: mass properties, the centre-of-mass
 /// frame an engine simulates, and conversions back to cairn's block frame.
 
+#include <array>
 #include <string>
 #include <vector>
 
@@ -24,7 +25,8 @@ struct RigidBlock {
     Mat3 principal = Mat3::Identity();    ///< columns: principal axes in block axes (rotation)
     Vec3 moments = Vec3::Zero();          ///< principal moments of inertia, kg·m²
     Vec3 half_extents = Vec3::Zero();     ///< box half extents along the block axes, m (boxes only)
-    double bearing_area = 0.0;            ///< area of the bottom face (face 0), m²
+    std::array<Vec3, 6> face_normals{};   ///< outward unit normal of each face, block axes
+    std::array<double, 6> face_areas{};   ///< area of each face, m²
     Vec3 com_world = Vec3::Zero();        ///< centre of mass at t = 0, world, m
     Quat orientation = Quat::Identity();  ///< rotation block frame → world at t = 0
 };
@@ -51,10 +53,16 @@ struct PointSpring {
     double damping = 0.0;     ///< N·s/m per contact point
 };
 
-/// the scene's face spring kn·A (A = the smaller bearing area of the pair) and its contact damping,
-/// split over `points` contact points; `b` may be null for a pair with a fixed block
-PointSpring matched_point_spring(const Scene& scene, const RigidBlock& a, const RigidBlock* b,
-                                 int points = 4);
+/// area of the face of block `b` (orientation `q`, block frame → world) that bears a contact whose
+/// normal, pointing out of `b`, is `out` (world): the face whose outward normal is most aligned
+/// with `out`; faces aligned within 1e-9 of the best are a tie and the smallest of them counts, m²
+double bearing_area(const RigidBlock& b, const Quat& q, const Vec3& out);
+
+/// the scene's face spring kn·A and its contact damping, split over `points` contact points, for a
+/// contact of blocks `a` and `b` (orientations `qa`, `qb`, block frame → world) whose normal `n`
+/// (world, unit) points from a towards b: A is the smaller of the two blocks' bearing areas
+PointSpring matched_point_spring(const Scene& scene, const RigidBlock& a, const Quat& qa, const RigidBlock& b,
+                                 const Quat& qb, const Vec3& n, int points = 4);
 
 /// the notes every velocity-level rigid-body engine adds for a scene: what it ignores (ks, β)
 /// and what its energy columns hold

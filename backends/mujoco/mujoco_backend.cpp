@@ -192,6 +192,7 @@ void MujocoBackend::build(const Scene& scene, const RunOptions& options) {
     }
     install_hexahedron_collider();
     hexahedra_.model = m_;
+    hexahedra_.boxes = matched_;
     hexahedra_.geom_block.assign(m_->ngeom, nullptr);
     for (int g = 0; g < m_->ngeom; ++g)
         if (geom_block_[g] >= 0) hexahedra_.geom_block[g] = &blocks_[geom_block_[g]];
@@ -223,11 +224,14 @@ void MujocoBackend::build(const Scene& scene, const RunOptions& options) {
     note(n);
     if (matched_)
         n << "matched contact: direct solref (-k, -b) set on every contact after collision from its pair: "
-             "kn*A/4 and c/4 per contact (A = smaller bottom-face area, c from the pair's reduced mass) "
-             "times MuJoCo's (1-d)*invweight of the two bodies, impedance d " << p.impedance
+             "kn*A/4 and c/4 per contact (A = smaller area of the two faces most aligned with the contact "
+             "normal, c from the pair's reduced mass) times MuJoCo's (1-d)*invweight of the two bodies, "
+             "impedance d " << p.impedance
           << " (static penetration exact, period of kn*A long by about " << 2.0 * p.impedance / (1.0 - p.impedance) * 100
           << " %); friction rows impedance " << kFrictionImpedance << " (impratio " << p.impratio
-          << ") and damping " << friction_damping_ << " 1/s";
+          << ") and damping " << friction_damping_ << " 1/s; box-box pairs through cairn's face-clipping "
+             "collider (MuJoCo 2.2.2's box-box collider gives duplicate and phantom deep points for equal "
+             "boxes face on face)";
     else
         n << "rigid contact: solref " << p.solref[0] << " " << p.solref[1] << ", solimp " << p.impedance << " "
           << p.impedance << " 0.001";
@@ -296,14 +300,19 @@ StepStatus MujocoBackend::step() {
 PointSpring MujocoBackend::pair_spring(const mjContact& c) const {
     const RigidBlock& a = blocks_[geom_block_[c.geom1]];
     const RigidBlock& b = blocks_[geom_block_[c.geom2]];
-    return a.fixed ? matched_point_spring(scene_, b, &a) : matched_point_spring(scene_, a, &b);
+    auto block_orientation = [&](const RigidBlock& x) { return x.fixed ? x.orientation : orientation(body_[x.index]); };
+    // MuJoCo's normal points from geom 1 to geom 2
+    const Vec3 n(c.frame[0], c.frame[1], c.frame[2]);
+    return matched_point_spring(scene_, a, block_orientation(a), b, block_orientation(b), n);
 }
 
 double MujocoBackend::depth_scale(const mjContact& c) const {
     // MuJoCo 2.2.2's box-box collider reports half the overlap as the contact distance (a 0.5 mm
-    // overlap gives dist = -0.25 mm; mesh pairs give the full overlap) while the row's velocity is
-    // the full approach speed: the spring on dist needs twice the stiffness
-    return m_->geom_type[c.geom1] == mjGEOM_BOX && m_->geom_type[c.geom2] == mjGEOM_BOX ? 2.0 : 1.0;
+    // overlap gives dist = -0.25 mm; cairn's collider gives the full overlap) while the row's
+    // velocity is the full approach speed: the spring on dist needs twice the stiffness
+    const bool own_box_box = m_->geom_type[c.geom1] == mjGEOM_BOX && m_->geom_type[c.geom2] == mjGEOM_BOX &&
+                             !hexahedra_.boxes;
+    return own_box_box ? 2.0 : 1.0;
 }
 
 void MujocoBackend::calibrate_contacts() {

@@ -11,6 +11,7 @@ namespace {
 thread_local const MujocoHexahedra* g_current = nullptr;
 mjfCollision g_box_mesh = nullptr;    // MuJoCo's own functions, for other models
 mjfCollision g_mesh_mesh = nullptr;
+mjfCollision g_box_box = nullptr;
 
 // world corners of the block behind geom g: free blocks from their body frame (block axes at the
 // centre of mass; a mesh geom's own frame is moved by MuJoCo's compiler), fixed ones as built
@@ -33,8 +34,10 @@ Corners corners(const mjModel* m, const mjData* d, const RigidBlock& b, int g) {
 int collide(const mjModel* m, const mjData* d, mjContact* con, int g1, int g2, mjtNum margin) {
     const MujocoHexahedra* h = g_current;
     const bool mesh_mesh = m->geom_type[g1] == mjGEOM_MESH && m->geom_type[g2] == mjGEOM_MESH;
-    if (!h || h->model != m || !h->geom_block[g1] || !h->geom_block[g2])
-        return (mesh_mesh ? g_mesh_mesh : g_box_mesh)(m, d, con, g1, g2, margin);
+    const bool box_box = m->geom_type[g1] == mjGEOM_BOX && m->geom_type[g2] == mjGEOM_BOX;
+    mjfCollision own = mesh_mesh ? g_mesh_mesh : box_box ? g_box_box : g_box_mesh;
+    if (!h || h->model != m || !h->geom_block[g1] || !h->geom_block[g2] || (box_box && !h->boxes))
+        return own(m, d, con, g1, g2, margin);
     auto points = hexahedron_contacts(corners(m, d, *h->geom_block[g1], g1), corners(m, d, *h->geom_block[g2], g2), 4);
     int n = 0;
     for (const HexContact& p : points) {
@@ -61,6 +64,8 @@ void install_hexahedron_collider() {
     std::call_once(once, [] {
         g_box_mesh = mjCOLLISIONFUNC[mjGEOM_BOX][mjGEOM_MESH];
         g_mesh_mesh = mjCOLLISIONFUNC[mjGEOM_MESH][mjGEOM_MESH];
+        g_box_box = mjCOLLISIONFUNC[mjGEOM_BOX][mjGEOM_BOX];
+        mjCOLLISIONFUNC[mjGEOM_BOX][mjGEOM_BOX] = &collide;
         mjCOLLISIONFUNC[mjGEOM_BOX][mjGEOM_MESH] = &collide;
         mjCOLLISIONFUNC[mjGEOM_MESH][mjGEOM_MESH] = &collide;
     });

@@ -2,6 +2,8 @@
 /// MuJoCo 2.2.2's mesh collider gives one contact per pair, so a face-on-face joint of general
 /// hexahedra hinges; box-mesh and mesh-mesh pairs of a cairn model go through cairn's
 /// face-clipping collider (common/hexahedron_contact) instead, through MuJoCo's collision table.
+/// Box-box pairs go there too when the model asks (matched mode): MuJoCo's box-box collider gives
+/// duplicate and phantom deep points for two equal boxes face on face (docs/backends.md).
 
 #include <mujoco/mujoco.h>
 
@@ -15,10 +17,12 @@ namespace cairn {
 struct MujocoHexahedra {
     const mjModel* model = nullptr;            ///< the model these geoms belong to
     std::vector<const RigidBlock*> geom_block; ///< block per geom id (null: not a block)
+    bool boxes = false;                        ///< true: box-box pairs through cairn's collider too
 };
 
-/// puts cairn's collider into mjCOLLISIONFUNC for box-mesh and mesh-mesh pairs (once per process);
-/// models other than the one made current fall through to MuJoCo's own function
+/// puts cairn's collider into mjCOLLISIONFUNC for box-box, box-mesh and mesh-mesh pairs (once per
+/// process); models other than the one made current, and box-box pairs of a model without
+/// `boxes`, fall through to MuJoCo's own function
 void install_hexahedron_collider();
 
 /// makes `h` the model the collider serves on this thread until the returned guard goes out of scope

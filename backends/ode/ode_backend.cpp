@@ -249,7 +249,7 @@ void OdeBackend::build(const Scene& scene, const RunOptions& options) {
       << (stepper == "auto" ? " (auto: dWorldStep up to 10 free blocks)" : "");
     note(n);
     if (matched_)
-        n << "matched contact: kn*A/4 per contact (A = smaller bottom-face area of the pair) as soft_erp = "
+        n << "matched contact: kn*A/4 per contact (A = smaller area of the two faces most aligned with the contact normal) as soft_erp = "
              "h*k/(h*k+c), soft_cfm = 1/(h*k+c); no correcting-velocity cap";
     else
         n << "rigid contact: erp " << erp << ", cfm " << cfm << ", contact max correcting velocity "
@@ -345,9 +345,12 @@ void OdeBackend::collide(dGeomID ga, dGeomID gb) {
         }
     }
     if (n == 0) return;
-    PointSpring s;
-    if (matched_) s = a.fixed ? matched_point_spring(scene_, b, &a) : matched_point_spring(scene_, a, &b);
+    const Quat qa = orientation(int(a.index)), qb = orientation(int(b.index));
     for (int i = 0; i < n; ++i) {
+        PointSpring s;
+        // ODE's normal points into geom 1 (block a)
+        const Vec3 normal(c[i].geom.normal[0], c[i].geom.normal[1], c[i].geom.normal[2]);
+        if (matched_) s = matched_point_spring(scene_, a, qa, b, qb, -normal);
         dSurfaceParameters& sp = c[i].surface;
         sp.mode = dContactApprox1;
         sp.mu = scene_.contact.friction;

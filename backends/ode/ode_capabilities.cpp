@@ -10,7 +10,7 @@ std::vector<FeatureSupport> ode_capabilities() {
     using S = Support;
     return {
         {Feature::penalty_stiffness, S::approximate,
-         "matched mode: kn·A/4 per contact (A = smaller bottom face of the pair) as soft ERP/CFM; "
+         "matched mode: kn·A/4 per contact (A = the smaller of the two faces that bear the contact) as soft ERP/CFM; "
          "rigid mode: near-rigid contact"},
         {Feature::normal_damping, S::approximate, "matched mode: dashpot per contact (c/4); rigid: none"},
         {Feature::elastic_stick, S::none, "velocity-level Coulomb friction: no shear spring"},

@@ -398,7 +398,7 @@ TEST_CASE("a generated arch rests where the statics of its no-tension joints put
 }
 
 // Bullet's matched mode puts kn·A/4 on each point of a pair's contact manifold (A the smaller
-// bottom face), which stands for a face when the points are its 4 corners. On the arch's inclined
+// of the two faces that bear the joint: 0.25 m² here, before 0.347 m², the intrados), which stands for a face when the points are its 4 corners. On the arch's inclined
 // joints Bullet keeps 2 to 4 points wherever recent frames found them (the crown joint: 2 points on
 // its extrados edge, a hinge line), so its joints have neither kn·A nor a face's moment. Undamped
 // its crown sinks 6 mm, 7x the joints' statics, and keeps jittering; with α = 2ω₁ as here it ends
