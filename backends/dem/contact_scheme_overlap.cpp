@@ -110,7 +110,9 @@ void ContactSet::evaluate_overlap(std::vector<Block>& blocks, double dt, long be
                                 if (a.cell == cell && a.target_face == tf) anchor = &a;
                             const bool fresh = anchor == nullptr;
                             if (fresh) {
-                                c.subs.push_back(SubAnchor{cell, tf});
+                                c.subs.emplace_back();
+                                c.subs.back().cell = cell;
+                                c.subs.back().target_face = tf;
                                 anchor = &c.subs.back();
                             }
                             anchor->seen = true;
