@@ -75,12 +75,12 @@ void ContactSet::evaluate_paper(std::vector<Block>& blocks, double dt, long begi
             // (the fraction φ from its depth at both ends, the depth linear over the step): the
             // end-of-step half kick takes back (1 − φ) of the spring's impulse (docs/dem.md, Energy)
             auto leave = [&]() {
-                if (!(last.fel > 0.0)) return;
+                if (last.face < 0) return;   // not in contact at the last evaluation
                 const NodeWeights wh = face_weights(hb, c.hit_face, pts[k].xi), wt = face_weights(tb, last.face, last.xi);
                 const double closing = -(wh.velocity(hb) - wt.velocity(tb)).dot(last.normal);
                 tot.dissipated += 0.5 * anchor.fd * closing * dt;
                 const double d0 = last.depth, d1 = anchor.track.depth;
-                if (!(d0 > 0.0) || !(d1 <= 0.0)) return;   // left sideways, or no known gap
+                if (!(last.fel > 0.0) || !(d0 > 0.0) || !(d1 <= 0.0)) return;   // no push, left sideways, or no known gap
                 const Vec3 f = (d0 / (d0 - d1) - 1.0) * last.fel * last.normal;
                 c.events.push_back({c.hit_block, wh, f});
                 c.events.push_back({c.target_block, wt, -f});
