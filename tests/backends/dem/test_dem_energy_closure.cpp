@@ -120,3 +120,7 @@ TEST_CASE("a deformable arch near its thinnest closes the energy balance, overla
     // arch_thick (one sub-contact per face like this one) misses it: docs/dem.md, Energy
     check_closes({"structures/arch_thin"}, {"overlap"}, "deformable");
 }
+
+TEST_CASE("a deformable column closes the energy balance under El Centro", "[dem][energy]") {
+    check_closes({"earthquake/column_elcentro"}, {"paper", "overlap"}, "deformable");
+}
