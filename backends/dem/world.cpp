@@ -29,6 +29,7 @@ World::World(const Scene& scene, double margin) : scene_(scene) {
     force_end_.assign(blocks_.size(), Vec3::Zero());
     torque_end_.assign(blocks_.size(), Vec3::Zero());
     accel_end_.resize(blocks_.size());
+    f_end_.resize(blocks_.size());
     for (size_t i = 0; i < blocks_.size(); ++i)
         if (blocks_[i].deformable) accel_[i].assign(blocks_[i].x.size(), Vec3::Zero());
     for (size_t i = 0; i < loads_.size(); ++i) {
@@ -252,23 +253,23 @@ void World::add_events() {
             event_[i] = 1;
             force_end_[i] = force_[i];
             torque_end_[i] = torque_[i];
+            if (b.deformable) f_end_[i].assign(b.f.begin(), b.f.end());
         }
-        if (b.deformable) continue;   // gathered per block below
+        if (b.deformable) {
+            for (int k = 0; k < e.at.count; ++k) f_end_[i][size_t(e.at.node[size_t(k)])] += e.at.w[size_t(k)] * e.force;
+            continue;
+        }
         Vec3 p = Vec3::Zero();
         for (int k = 0; k < e.at.count; ++k) p += e.at.w[size_t(k)] * b.x[size_t(e.at.node[size_t(k)])];
         force_end_[i] += e.force;
         torque_end_[i] += (p - b.body.x).cross(e.force);
     }
-    // deformable blocks: the node forces with the events, then their accelerations
+    // deformable blocks: the accelerations under the node forces with the events
     for (size_t i = 0; i < blocks_.size(); ++i) {
         Block& b = blocks_[i];
         if (!event_[i] || !b.deformable) continue;
-        f_end_.assign(b.f.begin(), b.f.end());
-        for (const auto& e : events)
-            if (size_t(e.block) == i)
-                for (int k = 0; k < e.at.count; ++k) f_end_[size_t(e.at.node[size_t(k)])] += e.at.w[size_t(k)] * e.force;
         accel_end_[i].resize(b.x.size());
-        b.deformable->accelerations(b.x, b.v, f_end_, accel_end_[i]);
+        b.deformable->accelerations(b.x, b.v, f_end_[i], accel_end_[i]);
     }
 }
 

@@ -97,7 +97,7 @@ private:
     std::vector<char> event_;                   // per block: has events this step
     std::vector<Vec3> force_end_, torque_end_;  // rigid blocks
     std::vector<std::vector<Vec3>> accel_end_;  // deformable blocks
-    std::vector<Vec3> f_end_;                   // buffer: a deformable block's node forces with events
+    std::vector<std::vector<Vec3>> f_end_;      // deformable blocks: node forces with the events
     std::vector<MaterialPoint> probes_, loads_;
     std::vector<Vec3> load_point_, load_force_; // per load: last application point and force
 };
