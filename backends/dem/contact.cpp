@@ -101,7 +101,9 @@ ContactTotals ContactSet::apply(std::vector<Block>& blocks, double dt) {
     }
     // spread the kept forces and add up, in the candidates' order
     ContactTotals tot;
+    events_.clear();
     for (auto& c : candidates_) {
+        events_.insert(events_.end(), c.events.begin(), c.events.end());
         Block& hb = blocks[c.hit_block];
         Block& tb = blocks[c.target_block];
         for (const auto& p : c.forces) {
@@ -130,6 +132,7 @@ void ContactSet::evaluate(std::vector<Block>& blocks, double dt, long begin, lon
         Candidate& c = candidates_[size_t(ci)];
         c.forces.clear();
         c.sub_forces.clear();
+        c.events.clear();
         c.totals = ContactTotals{};
     }
     if (law_.scheme == ContactScheme::paper) evaluate_paper(blocks, dt, begin, end, keep_forces);

@@ -7,6 +7,7 @@
 /// - paper: the paper's node-to-face rule on a grid of hitting points, each with a penalty normal
 ///   force and a shear spring from a stick anchor in the target face's natural coordinates.
 
+#include <limits>
 #include <utility>
 #include <vector>
 
@@ -17,6 +18,16 @@
 
 namespace cairn::dem {
 
+/// What a hitting point did at the last evaluation, for the step in which it enters or leaves
+/// contact (docs/dem.md, Energy: contact events).
+struct PointTrack {
+    double depth = std::numeric_limits<double>::quiet_NaN();  ///< signed depth behind its side, m (NaN: unknown)
+    double fel = 0.0;           ///< elastic normal force kn·a·d, N (0: not in contact)
+    Vec3 normal = Vec3::UnitZ();///< the target's outward normal there
+    int face = -1;              ///< target boundary face of its projection
+    Vec2 xi = Vec2::Zero();     ///< natural coordinates of its projection there
+};
+
 /// Stick anchor of one hitting point.
 struct Anchor {
     int side = -1;              ///< target side the point acts on; -1 = not in contact
@@ -26,6 +37,7 @@ struct Anchor {
     Vec3 u = Vec3::Zero();      ///< shear-spring offset at the last evaluation, world, m
     double fd = 0.0;            ///< normal dashpot force at the last evaluation, N
     Vec3 fds = Vec3::Zero();    ///< shear dashpot force at the last evaluation, world, N
+    PointTrack track;           ///< depth and normal spring of the last evaluation (kept on reset)
 };
 
 /// Shear state of one sub-contact of the overlap scheme: the elastic offset of the stick spring,
@@ -39,6 +51,10 @@ struct SubAnchor {
     bool seen = false;          ///< in contact at this evaluation
     double fd = 0.0;            ///< normal dashpot force at the last evaluation, N
     Vec3 fds = Vec3::Zero();    ///< shear dashpot force at the last evaluation, world, N
+    double fel = 0.0;           ///< elastic normal force kn·∫d dA at the last evaluation, N
+    double stored = 0.0;        ///< normal-spring energy ½kn·∫d² dA at the last evaluation, J
+    Vec3 normal = Vec3::UnitZ();///< the target's outward normal at the last evaluation
+    NodeWeights hit_at, target_at;  ///< where its force acted at the last evaluation
 };
 
 /// The force of one sub-contact, kept until it is spread to the nodes: both blocks take it at the
@@ -66,6 +82,15 @@ struct PointForce {
     Vec3 force = Vec3::Zero();  ///< on the hitting block (the target takes −force), N
 };
 
+/// The part of a contact force that acts in the end-of-step half kick only: a point or sub-contact
+/// that entered or left contact inside the step gets the impulse of the part of the step it was
+/// in contact (docs/dem.md, Energy: contact events).
+struct EventForce {
+    int block = 0;              ///< block it acts on
+    NodeWeights at;             ///< where
+    Vec3 force = Vec3::Zero();  ///< N
+};
+
 /// A hitting face that may touch a target block.
 struct Candidate {
     int hit_block = 0;
@@ -75,6 +100,7 @@ struct Candidate {
     std::vector<PointForce> forces;  ///< paper scheme: this step's forces, spread after every candidate
     std::vector<SubAnchor> subs;     ///< overlap scheme: anchors of the sub-contacts in contact
     std::vector<SubForce> sub_forces;///< overlap scheme: this step's forces, spread after every candidate
+    std::vector<EventForce> events;  ///< this step's end-of-step corrections of points entering or leaving
     ContactTotals totals;            ///< this step's energies and counts
 };
 
@@ -90,6 +116,9 @@ public:
     /// Candidates are evaluated on every core, then spread in their fixed order (same bits on
     /// any number of threads)
     ContactTotals apply(std::vector<Block>& blocks, double dt);
+    /// the end-of-step corrections of points that entered or left contact in this step, in the
+    /// candidates' order (valid until the next apply)
+    const std::vector<EventForce>& events() const { return events_; }
     /// candidate hitting faces
     const std::vector<Candidate>& candidates() const { return candidates_; }
     /// broad-phase margin, m
@@ -113,6 +142,7 @@ private:
     bool keep_forces_ = false;
     bool prune_ = true;
     std::vector<Candidate> candidates_;
+    std::vector<EventForce> events_;
     std::vector<SideFrames> frames_;   // every block's side frames of this step
     // buffers kept between refreshes so that a steady state allocates nothing
     std::vector<Candidate> previous_;

@@ -7,6 +7,22 @@
 
 namespace cairn::dem {
 
+namespace {
+
+// the weights that put a force at natural coordinates xi of boundary face k on its 4 nodes
+NodeWeights face_weights(const Block& b, int k, const Vec2& xi) {
+    NodeWeights w;
+    w.count = 4;
+    const auto q = quad_weights(xi);
+    for (int i = 0; i < 4; ++i) {
+        w.node[size_t(i)] = b.mesh.faces[size_t(k)][size_t(i)];
+        w.w[size_t(i)] = q[size_t(i)];
+    }
+    return w;
+}
+
+}  // namespace
+
 void ContactSet::evaluate_paper(std::vector<Block>& blocks, double dt, long begin, long end, bool keep_forces) {
     // the geometry of the (hitting, target) pair of the candidates at hand
     PairGeometry g;
@@ -19,7 +35,9 @@ void ContactSet::evaluate_paper(std::vector<Block>& blocks, double dt, long begi
         // an anchor given up releases its shear spring: that energy is dissipated
         auto reset = [&](Anchor& a) {
             tot.dissipated += a.energy;
+            const PointTrack track = a.track;
             a = Anchor{};
+            a.track = track;
         };
         if (g.update(blocks, frames_, c.hit_block, c.target_block, true)) {
             for (int s = 0; s < 6; ++s)
@@ -37,6 +55,8 @@ void ContactSet::evaluate_paper(std::vector<Block>& blocks, double dt, long begi
         const auto [cn_area, ct_area] = dashpot_per_area(law_, hb, tb, hit_side);
         for (size_t k = 0; k < pts.size(); ++k) {
             Anchor& anchor = c.anchors[k];
+            const PointTrack last = anchor.track;   // the previous evaluation
+            anchor.track = PointTrack{};
             const Vec3 xp = quad_point(hq, pts[k].xi);
             // the point acts on the allowed target side it lies deepest behind, if it is inside
             // the target block (behind every side plane, flush within rounding) and no other
@@ -47,10 +67,29 @@ void ContactSet::evaluate_paper(std::vector<Block>& blocks, double dt, long begi
                 dist[s] = g.normal[s].dot(xp - g.centre[s]);
                 if (g.best_side[s] == hit_side && g.target_ok[s] && (side < 0 || dist[s] > dist[side])) side = s;
             }
+            // the signed depth behind the side it acts (or would act) on: its gap when outside
+            const int depth_side = anchor.side >= 0 ? anchor.side : side;
+            if (depth_side >= 0) anchor.track.depth = -dist[depth_side];
+            // a point that leaves contact in this step: its last dashpot force did work over the
+            // step, and its spring acted only for the part of the step before the gap opened
+            // (the fraction φ from its depth at both ends, the depth linear over the step): the
+            // end-of-step half kick takes back (1 − φ) of the spring's impulse (docs/dem.md, Energy)
+            auto leave = [&]() {
+                if (last.face < 0) return;   // not in contact at the last evaluation
+                const NodeWeights wh = face_weights(hb, c.hit_face, pts[k].xi), wt = face_weights(tb, last.face, last.xi);
+                const double closing = -(wh.velocity(hb) - wt.velocity(tb)).dot(last.normal);
+                tot.dissipated += 0.5 * anchor.fd * closing * dt;
+                const double d0 = last.depth, d1 = anchor.track.depth;
+                if (!(last.fel > 0.0) || !(d0 > 0.0) || !(d1 <= 0.0)) return;   // no push, left sideways, or no known gap
+                const Vec3 f = (d0 / (d0 - d1) - 1.0) * last.fel * last.normal;
+                c.events.push_back({c.hit_block, wh, f});
+                c.events.push_back({c.target_block, wt, -f});
+            };
             bool inside = side >= 0 && dist[side] < 0.0;
             for (int s = 0; inside && s < 6; ++s)
                 if (s != side && (dist[s] > g.flush_tol || dist[s] > dist[side] + g.closer_tol)) inside = false;
             if (!inside) {
+                leave();
                 reset(anchor);
                 continue;
             }
@@ -63,6 +102,8 @@ void ContactSet::evaluate_paper(std::vector<Block>& blocks, double dt, long begi
             const Vec3& n = pr.normal;
             const double depth = n.dot(pr.point - xp);
             if (!(depth > 0.0)) {
+                anchor.track.depth = depth;
+                leave();
                 reset(anchor);
                 continue;
             }
@@ -94,7 +135,9 @@ void ContactSet::evaluate_paper(std::vector<Block>& blocks, double dt, long begi
             if (law_.ks > 0.0 && fn > 0.0) {
                 if (anchor.side != side) {
                     reset(anchor);
-                    anchor = Anchor{side, face, pr.xi};
+                    anchor.side = side;
+                    anchor.face = face;
+                    anchor.xi0 = pr.xi;
                 }
                 const Vec3 x0_old = frame.valid ? frame.point(anchor.xi0) : quad_point(tb.face_quad(anchor.face), anchor.xi0);
                 Vec3 u = pr.point - x0_old;
@@ -133,6 +176,16 @@ void ContactSet::evaluate_paper(std::vector<Block>& blocks, double dt, long begi
             }
             anchor.fd = fd;
             anchor.fds = fds;
+            anchor.track = PointTrack{depth, fn > 0.0 ? fn_el : 0.0, n, face, pr.xi};
+            // a point that enters contact in this step pushed only for the part φ of the step
+            // after its gap closed: the end-of-step half kick gives φ of the spring's force, so
+            // the step's impulse and work are those of that part (docs/dem.md, Energy); the
+            // next step starts from the whole force
+            if (fn > 0.0 && last.depth <= 0.0) {
+                const Vec3 f = (depth / (depth - last.depth) - 1.0) * fn_el * n;
+                c.events.push_back({c.hit_block, face_weights(hb, c.hit_face, pts[k].xi), f});
+                c.events.push_back({c.target_block, face_weights(tb, face, pr.xi), -f});
+            }
             if (keep_forces) {
                 c.forces.push_back({int(k), face, pr.xi, fn * n + fs});
             } else {

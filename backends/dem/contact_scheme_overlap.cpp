@@ -110,7 +110,9 @@ void ContactSet::evaluate_overlap(std::vector<Block>& blocks, double dt, long be
                                 if (a.cell == cell && a.target_face == tf) anchor = &a;
                             const bool fresh = anchor == nullptr;
                             if (fresh) {
-                                c.subs.push_back(SubAnchor{cell, tf});
+                                c.subs.emplace_back();
+                                c.subs.back().cell = cell;
+                                c.subs.back().target_face = tf;
                                 anchor = &c.subs.back();
                             }
                             anchor->seen = true;
@@ -129,6 +131,24 @@ void ContactSet::evaluate_overlap(std::vector<Block>& blocks, double dt, long be
                             tot.dissipated += 0.5 * (anchor->fd + fd) * closing * dt;
                             anchor->fd = fd;
                             tot.stored += 0.5 * law_.kn * in.d2;
+                            // a sub-contact that entered in this step pushed only for part of it:
+                            // the end-of-step half kick gives the spring the force 2U/δ (U its
+                            // energy now, δ the step's closing) whose trapezoid work is U; for a
+                            // face landing flat that is φ·kn·∫d dA, φ the part of the step after
+                            // the gap closed (docs/dem.md, Energy: contact events)
+                            const double delta = closing * dt;
+                            if (fresh && fn > 0.0 && delta > 0.0) {
+                                const double f_end = std::min(fn_el, law_.kn * in.d2 / delta);
+                                if (f_end < fn_el) {
+                                    c.events.push_back({c.hit_block, wh, (f_end - fn_el) * nt});
+                                    c.events.push_back({c.target_block, wt, (fn_el - f_end) * nt});
+                                }
+                            }
+                            anchor->fel = fn > 0.0 ? fn_el : 0.0;
+                            anchor->stored = 0.5 * law_.kn * in.d2;
+                            anchor->normal = nt;
+                            anchor->hit_at = wh;
+                            anchor->target_at = wt;
                             Vec3 fs = Vec3::Zero();
                             if (law_.ks > 0.0 && fn > 0.0) {
                                 // the shear offset grows with the relative tangential motion at the
@@ -192,8 +212,26 @@ void ContactSet::evaluate_overlap(std::vector<Block>& blocks, double dt, long be
         // anchors out of contact release their shear springs: that energy is dissipated
         size_t kept = 0;
         for (size_t i = 0; i < c.subs.size(); ++i) {
-            if (c.subs[i].seen) c.subs[kept++] = c.subs[i];
-            else tot.dissipated += std::max(0.0, c.subs[i].energy);
+            const SubAnchor& a = c.subs[i];
+            if (a.seen) {
+                c.subs[kept++] = a;
+                continue;
+            }
+            tot.dissipated += std::max(0.0, a.energy);
+            if (a.fd == 0.0 && !(a.fel > 0.0)) continue;
+            // it left in this step: its last dashpot force did work over the step, and its
+            // spring pushed only until the gap opened: the end-of-step half kick takes back the
+            // part of the start's force whose trapezoid work exceeds its energy U0, 2U0/|δ| − F0
+            // (≤ 0; a face lifting flat: (φ − 1)·F0) (docs/dem.md, Energy: contact events)
+            const double closing = -(a.hit_at.velocity(hb) - a.target_at.velocity(tb)).dot(a.normal);
+            tot.dissipated += 0.5 * a.fd * closing * dt;
+            const double delta = closing * dt;
+            if (!(a.fel > 0.0) || !(delta < 0.0)) continue;
+            const double f_end = std::max(-a.fel, 2.0 * a.stored / -delta - a.fel);
+            if (f_end < 0.0) {
+                c.events.push_back({c.hit_block, a.hit_at, f_end * a.normal});
+                c.events.push_back({c.target_block, a.target_at, -f_end * a.normal});
+            }
         }
         c.subs.resize(kept);
     }

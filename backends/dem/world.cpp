@@ -25,6 +25,11 @@ World::World(const Scene& scene, double margin) : scene_(scene) {
     torque_.assign(blocks_.size(), Vec3::Zero());
     loss_.assign(blocks_.size(), 0.0);
     accel_.resize(blocks_.size());
+    event_.assign(blocks_.size(), 0);
+    force_end_.assign(blocks_.size(), Vec3::Zero());
+    torque_end_.assign(blocks_.size(), Vec3::Zero());
+    accel_end_.resize(blocks_.size());
+    f_end_.resize(blocks_.size());
     for (size_t i = 0; i < blocks_.size(); ++i)
         if (blocks_[i].deformable) accel_[i].assign(blocks_[i].x.size(), Vec3::Zero());
     for (size_t i = 0; i < loads_.size(); ++i) {
@@ -64,11 +69,11 @@ double World::potential() const {
 
 bool World::step() {
     refresh_if_due();
-    kick(0.5 * dt_);
+    kick(0.5 * dt_, false);
     drift();
     t_ += dt_;
     compute_forces();
-    kick(0.5 * dt_);
+    kick(0.5 * dt_, true);
     if (!inversion_.empty()) {
         failure_ = inversion_;
         return false;
@@ -128,7 +133,7 @@ void World::refresh_if_due() {
 }
 
 // stage: half-step velocity update from the current forces, mass damping α implicit
-void World::kick(double h) {
+void World::kick(double h, bool end) {
     const double alpha = scene_.damping.alpha, damp = 1.0 / (1.0 + alpha * h);
     const long count = long(blocks_.size());
     // rigid blocks on every core, each loss kept per block; deformable blocks (parallel inside)
@@ -137,13 +142,16 @@ void World::kick(double h) {
     for (long i = 0; i < count; ++i) {
         Block& b = blocks_[size_t(i)];
         if (b.fixed || b.deformable) continue;
-        loss_[size_t(i)] = dem::kick(b.body, force_[size_t(i)], torque_[size_t(i)], h, alpha);
+        const bool ev = end && event_[size_t(i)];
+        loss_[size_t(i)] = dem::kick(b.body, ev ? force_end_[size_t(i)] : force_[size_t(i)],
+                                     ev ? torque_end_[size_t(i)] : torque_[size_t(i)], h, alpha);
     }
     for (size_t i = 0; i < blocks_.size(); ++i) {
         Block& b = blocks_[i];
         if (b.fixed || !b.deformable) continue;
-        for (size_t n = 0; n < b.v.size(); ++n) b.v[n] = (b.v[n] + h * accel_[i][n]) * damp;
-        loss_[i] = alpha > 0.0 ? mass_damping_loss(*b.deformable, b.x, b.v, accel_[i], h, alpha) : 0.0;
+        const auto& a = end && event_[i] ? accel_end_[i] : accel_[i];
+        for (size_t n = 0; n < b.v.size(); ++n) b.v[n] = (b.v[n] + h * a[n]) * damp;
+        loss_[i] = alpha > 0.0 ? mass_damping_loss(*b.deformable, b.x, b.v, a, h, alpha) : 0.0;
     }
     for (size_t i = 0; i < blocks_.size(); ++i)
         if (!blocks_[i].fixed) energy_.dissipated += loss_[i];   // 0 when α = 0
@@ -227,6 +235,41 @@ void World::compute_forces() {
             element_updates_ += (long long)b.deformable->element_count();
             b.deformable->accelerations(b.x, b.v, b.f, accel_[i]);
         }
+    }
+    add_events();
+}
+
+// stage: the end-of-step half kick's forces of the blocks touched by contact events (a point or
+// sub-contact that entered or left contact inside the step, docs/dem.md, Energy): the step's
+// forces plus the events' corrections, in the events' fixed order
+void World::add_events() {
+    const auto& events = contacts_.events();
+    std::fill(event_.begin(), event_.end(), 0);
+    for (const auto& e : events) {
+        const size_t i = size_t(e.block);
+        Block& b = blocks_[i];
+        if (b.fixed) continue;
+        if (!event_[i]) {
+            event_[i] = 1;
+            force_end_[i] = force_[i];
+            torque_end_[i] = torque_[i];
+            if (b.deformable) f_end_[i].assign(b.f.begin(), b.f.end());
+        }
+        if (b.deformable) {
+            for (int k = 0; k < e.at.count; ++k) f_end_[i][size_t(e.at.node[size_t(k)])] += e.at.w[size_t(k)] * e.force;
+            continue;
+        }
+        Vec3 p = Vec3::Zero();
+        for (int k = 0; k < e.at.count; ++k) p += e.at.w[size_t(k)] * b.x[size_t(e.at.node[size_t(k)])];
+        force_end_[i] += e.force;
+        torque_end_[i] += (p - b.body.x).cross(e.force);
+    }
+    // deformable blocks: the accelerations under the node forces with the events
+    for (size_t i = 0; i < blocks_.size(); ++i) {
+        Block& b = blocks_[i];
+        if (!event_[i] || !b.deformable) continue;
+        accel_end_[i].resize(b.x.size());
+        b.deformable->accelerations(b.x, b.v, f_end_[i], accel_end_[i]);
     }
 }
 

@@ -67,9 +67,11 @@ public:
 
 private:
     void refresh_if_due();
-    void kick(double h);
+    /// end: the end-of-step half kick, which adds the contact events' corrections
+    void kick(double h, bool end);
     void drift();
     void compute_forces();
+    void add_events();
     bool state_finite() const;
     std::string inversion_message(size_t block) const;
 
@@ -90,6 +92,12 @@ private:
     std::vector<Vec3> force_, torque_;          // rigid blocks: resultant of the current step
     std::vector<double> loss_;                  // per block: mass-damping loss of the last kick, J
     std::vector<std::vector<Vec3>> accel_;      // deformable blocks: nodal accelerations
+    // contact events (a point entering or leaving inside the step): the end-of-step half kick's
+    // forces of the blocks they touch
+    std::vector<char> event_;                   // per block: has events this step
+    std::vector<Vec3> force_end_, torque_end_;  // rigid blocks
+    std::vector<std::vector<Vec3>> accel_end_;  // deformable blocks
+    std::vector<std::vector<Vec3>> f_end_;      // deformable blocks: node forces with the events
     std::vector<MaterialPoint> probes_, loads_;
     std::vector<Vec3> load_point_, load_force_; // per load: last application point and force
 };

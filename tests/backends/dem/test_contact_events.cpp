@@ -1,0 +1,87 @@
+// A hitting point (paper scheme) or sub-contact (overlap scheme) that enters or leaves contact
+// inside a step: the step's work on the block is the spring energy it stores or gives back.
+#include <catch2/catch.hpp>
+
+#include <cmath>
+
+#include "dem_test_util.hpp"
+#include "support/scene_builder.hpp"
+
+using namespace cairn;
+
+namespace {
+
+constexpr double kDt = 1e-4;        // s: ω·dt ≈ 0.03 for the 0.1 m cube on kn = 3e7
+constexpr double kSpeed = 1.0;      // m/s: the cube moves kSpeed·kDt = 0.1 mm in a step
+constexpr double kEdge = 0.1;       // m
+
+// a free 0.1 m cube A over a fixed 0.2 m cube B (top at z = 0), no gravity, no friction work (it
+// moves along the normal only); bottom face of A at z = gap, moving at vz; paper: the grid is
+// the 4 corners of the face
+Scene drop(ContactScheme scheme, double gap, double vz) {
+    Scene s = test::stone_scene();
+    s.gravity = Vec3::Zero();
+    s.contact.scheme = scheme;
+    s.contact.grid_spacing = 0.2;
+    s.run.dt = kDt;
+    test::add_box(s, "A", Vec3(kEdge, kEdge, kEdge), Vec3(0, 0, 0.5 * kEdge + gap), false);
+    test::add_box(s, "B", Vec3(0.2, 0.2, 0.2), Vec3(0, 0, -0.1), true);
+    s.blocks[0].velocity = Vec3(0, 0, vz);
+    return s;
+}
+
+}  // namespace
+
+TEST_CASE("a face entering contact inside a step books exactly the spring energy it stores", "[dem][energy][contact]") {
+    for (auto scheme : {ContactScheme::paper, ContactScheme::overlap}) {
+        for (double phi : {0.2, 0.5, 0.9}) {
+            INFO("scheme " << int(scheme) << ", part of the step in contact " << phi);
+            // the gap closes at (1 − φ)·dt: the face is φ·v·dt deep at the end of the step
+            const double gap = (1.0 - phi) * kSpeed * kDt;
+            auto b = test::build_dem(drop(scheme, gap, -kSpeed));
+            const Energies e0 = b->sample().energy;
+            REQUIRE(b->step() == StepStatus::ok);
+            const Energies e1 = b->sample().energy;
+            const double m = 2600.0 * std::pow(kEdge, 3), k = 3e7 * kEdge * kEdge;   // kg, N/m
+            const double d1 = phi * kSpeed * kDt;
+            CHECK(e1.contact == Approx(0.5 * k * d1 * d1).epsilon(1e-9));
+            // the step pushes with φ·k·d1 in its end half kick: its trapezoid work is
+            // ½·φ·k·d1·(v·dt) = ½k·d1², the stored energy; the kinetic energy then carries the
+            // kick's own (dt²/8)·F²/m (docs/dem.md, Energy), nothing else
+            const double f_end = phi * k * d1;
+            const double shadow = kDt * kDt / 8.0 * f_end * f_end / m;
+            CHECK(e1.total() - e0.total() == Approx(shadow).epsilon(1e-6));
+            // the step's force alone (the whole k·d1 at the end) would have taken ½k·d1·gap more
+            // out of the kinetic energy than the spring stores: 4 to 900 times the shadow here
+            CHECK(0.5 * k * d1 * gap > 4.0 * shadow);
+        }
+    }
+}
+
+TEST_CASE("a face leaving contact inside a step gets back exactly the spring energy it stored", "[dem][energy][contact]") {
+    for (auto scheme : {ContactScheme::paper, ContactScheme::overlap}) {
+        for (double phi : {0.2, 0.5, 0.9}) {
+            INFO("scheme " << int(scheme) << ", part of the step in contact " << phi);
+            const double m = 2600.0 * std::pow(kEdge, 3), k = 3e7 * kEdge * kEdge;   // kg, N/m
+            // start d0 deep moving up at v: the first half kick adds k·d0·dt/(2m), and the step's
+            // drift of v_half·dt takes the face to d1 = d0 − v_half·dt; choose d0 so that the gap
+            // opens after the part φ of the step: d0 = φ·v_half·dt
+            const double d0 = phi * kSpeed * kDt / (1.0 - phi * k * kDt * kDt / (2.0 * m));
+            const double v_half = kSpeed + k * d0 * kDt / (2.0 * m);
+            REQUIRE(d0 == Approx(phi * v_half * kDt).epsilon(1e-12));
+            auto b = test::build_dem(drop(scheme, -d0, kSpeed));
+            const Energies e0 = b->sample().energy;
+            CHECK(e0.contact == Approx(0.5 * k * d0 * d0).epsilon(1e-9));
+            REQUIRE(b->step() == StepStatus::ok);
+            const Energies e1 = b->sample().energy;
+            CHECK(e1.contact == 0.0);
+            // first half kick k·d0, end half kick (φ − 1)·k·d0: the trapezoid work is
+            // ½·φ·k·d0·v_half·dt = ½k·d0², the energy given back; the kinetic energy carries
+            // (dt²/8)·(F_end² − F_start²)/m
+            const double f0 = k * d0, f_end = (phi - 1.0) * k * d0;
+            const double shadow = kDt * kDt / 8.0 * (f_end * f_end - f0 * f0) / m;
+            CHECK(e1.total() - e0.total() == Approx(shadow).epsilon(1e-6));
+            CHECK(0.5 * k * d0 * (1.0 - phi) * v_half * kDt > 4.0 * std::abs(shadow));
+        }
+    }
+}

@@ -1,0 +1,126 @@
+// Every shipped scene closes its energy balance within 0.1 % of the energy of its motion (the
+// runner's max_balance_error, written in run.json: docs/dem.md, Energy) on dem, rigid and
+// deformable, paper and overlap schemes — at the default time step where that holds, and at
+// dt_safety 0.05 for the cases whose kinetic energy carries the step's (dt²/8)·F²/m at a hard
+// impact (docs/dem.md lists them with their numbers).
+#include <catch2/catch.hpp>
+
+#include <string>
+#include <vector>
+
+#include "dem/dem_backend.hpp"
+#include "run/runner.hpp"
+#include "scene/scene_io.hpp"
+
+using namespace cairn;
+
+namespace {
+
+// the bound of the issue: 0.1 % of the motion energy
+constexpr double kClosure = 1e-3;
+
+// largest |balance error| / motion energy of a shipped scene run to its end on dem
+double max_balance_error(const std::string& scene, const std::string& scheme, const std::string& model,
+                         const std::string& dt_safety = "") {
+    std::vector<Override> set{{"contact.scheme", "\"" + scheme + "\""}};
+    if (!dt_safety.empty()) set.push_back({"run.dt_safety", dt_safety});
+    Scene s = load_scene(std::string(CAIRN_SOURCE_DIR) + "/scenarios/" + scene + ".toml", set);
+    apply_model(s, model);
+    auto backend = dem_backend_info().make();
+    const RunResult r = run_scene(*backend, s, RunOptions{});
+    INFO(scene << " " << scheme << " " << model << ": " << r.message);
+    REQUIRE(r.status == RunStatus::completed);
+    return r.max_balance_error;
+}
+
+void check_closes(const std::vector<std::string>& scenes, const std::vector<std::string>& schemes,
+                  const std::string& model, const std::string& dt_safety = "") {
+    for (const auto& scene : scenes)
+        for (const auto& scheme : schemes) {
+            const double e = max_balance_error(scene, scheme, model, dt_safety);
+            INFO(scene << ", " << scheme << " scheme, " << model << (dt_safety.empty() ? "" : ", dt_safety ")
+                       << dt_safety << ": max balance error " << e << " of the motion energy");
+            CHECK(e < kClosure);
+        }
+}
+
+}  // namespace
+
+TEST_CASE("rigid blocks close the energy balance of the paper's scenes at the default step", "[dem][energy]") {
+    check_closes({"paper/friction_slide", "paper/friction_stick", "paper/friction_stick_base", "paper/rocking_damped_02",
+                  "paper/rocking_damped_04", "paper/rocking_housner", "paper/rocking_slender"},
+                 {"paper", "overlap"}, "rigid");
+    // the overlap scheme's rocking (overturns, error at the corner impact) and rolling (edge
+    // impact) miss it: docs/dem.md, Energy
+    check_closes({"paper/rocking", "paper/rolling"}, {"paper"}, "rigid");
+}
+
+TEST_CASE("rigid blocks close the energy balance of the hard impacts at dt_safety 0.05", "[dem][energy]") {
+    // at the default 0.1 their kinetic energy carries (dt²/8)·F²/m at the impact's peak,
+    // 0.10-0.24 % of the motion energy; it falls as dt²
+    check_closes({"paper/impact", "paper/impact_damped", "paper/stability"}, {"paper", "overlap"}, "rigid", "0.05");
+    check_closes({"paper/rolling"}, {"overlap"}, "rigid", "0.05");
+}
+
+TEST_CASE("deformable blocks close the energy balance of impacts, sliding and rolling, paper scheme", "[dem][energy]") {
+    check_closes({"paper/friction_slide", "paper/impact", "paper/impact_damped", "paper/rolling", "paper/stability"},
+                 {"paper"}, "deformable");
+}
+
+TEST_CASE("deformable blocks close the energy balance of rocking, paper scheme", "[dem][energy]") {
+    check_closes({"paper/rocking", "paper/rocking_damped_02", "paper/rocking_damped_04", "paper/rocking_housner",
+                  "paper/rocking_slender"},
+                 {"paper"}, "deformable");
+}
+
+TEST_CASE("a deformable block sticking under a lifting load closes its energy balance, paper scheme", "[dem][energy]") {
+    check_closes({"paper/friction_stick"}, {"paper"}, "deformable");
+}
+
+TEST_CASE("a deformable block sticking on a long base closes its energy balance, paper scheme", "[dem][energy]") {
+    check_closes({"paper/friction_stick_base"}, {"paper"}, "deformable");
+}
+
+TEST_CASE("deformable blocks close the energy balance of the impacts and rolling, overlap scheme", "[dem][energy]") {
+    check_closes({"paper/friction_slide", "paper/impact", "paper/impact_damped", "paper/rolling", "paper/stability"},
+                 {"overlap"}, "deformable");
+}
+
+TEST_CASE("deformable blocks close the energy balance of rocking, overlap scheme", "[dem][energy]") {
+    check_closes({"paper/rocking", "paper/rocking_slender"}, {"overlap"}, "deformable");
+}
+
+TEST_CASE("deformable blocks close the energy balance of damped rocking, overlap scheme", "[dem][energy]") {
+    check_closes({"paper/rocking_damped_02", "paper/rocking_damped_04"}, {"overlap"}, "deformable");
+}
+
+TEST_CASE("a deformable block rocking on a rigid base closes its energy balance, overlap scheme", "[dem][energy]") {
+    check_closes({"paper/rocking_housner"}, {"overlap"}, "deformable");
+}
+
+TEST_CASE("rigid arches close the energy balance, overlap scheme", "[dem][energy]") {
+    // the arch on the paper scheme misses it (docs/dem.md, Energy); arch_thick and arch_thin state
+    // the overlap scheme
+    check_closes({"structures/arch", "structures/arch_thick", "structures/arch_thin"}, {"overlap"}, "rigid");
+}
+
+TEST_CASE("a rigid column closes the energy balance under El Centro", "[dem][energy]") {
+    check_closes({"earthquake/column_elcentro"}, {"paper", "overlap"}, "rigid");
+}
+
+TEST_CASE("a rigid column closes the energy balance under a pushover", "[dem][energy]") {
+    check_closes({"structures/column_pushover"}, {"paper", "overlap"}, "rigid");
+}
+
+TEST_CASE("a deformable arch closes the energy balance, overlap scheme", "[dem][energy]") {
+    check_closes({"structures/arch"}, {"overlap"}, "deformable");
+}
+
+TEST_CASE("a deformable arch near its thinnest closes the energy balance, overlap scheme", "[dem][energy]") {
+    // arch_thick (one sub-contact per face like this one) misses it: docs/dem.md, Energy
+    check_closes({"structures/arch_thin"}, {"overlap"}, "deformable");
+}
+
+TEST_CASE("a deformable column closes the energy balance under El Centro", "[dem][energy]") {
+    check_closes({"earthquake/column_elcentro"}, {"paper", "overlap"}, "deformable");
+}
