@@ -166,10 +166,10 @@ BackendInfo dem_backend_info() {
     info.name = "dem";
     info.description = "in-house discrete element engine (the paper's contact law), rigid or deformable hex8 blocks";
     info.capabilities = {
-        {Feature::penalty_stiffness, Support::exact, "kn·a per hitting point (corners + virtual grid)"},
-        {Feature::normal_damping, Support::exact, "dashpot per hitting point (ratio ζ or time γ)"},
-        {Feature::elastic_stick, Support::exact, "shear spring ks·a from a stored stick anchor"},
-        {Feature::friction_shape, Support::exact, "Coulomb disc per hitting point"},
+        {Feature::penalty_stiffness, Support::exact, "kn integrated over each face's overlap (scheme overlap, the default), or kn·a per hitting point (scheme paper: corners + virtual grid)"},
+        {Feature::normal_damping, Support::exact, "dashpot per sub-contact or hitting point (ratio ζ or time γ)"},
+        {Feature::elastic_stick, Support::exact, "shear spring from a stored stick anchor per sub-contact or hitting point"},
+        {Feature::friction_shape, Support::exact, "Coulomb disc per sub-contact or hitting point"},
         {Feature::mass_damping, Support::exact, "α·M, implicit in the kick"},
         {Feature::stiffness_damping, Support::exact, "deformable blocks: strain-rate (Kelvin-Voigt) β·C:Ė; rigid blocks have none"},
         {Feature::deformable_blocks, Support::exact, "hex8 St. Venant-Kirchhoff, total Lagrangian; lumped, consistent, barycentre or corrected mass"},

@@ -78,7 +78,7 @@ struct ContactLaw {
     double damping = 0.0;       ///< ζ (dimensionless) or γ (s), per damping_rule
     double restitution = 0.0;   ///< for rigid-contact engines only: coefficient of restitution
     double grid_spacing = 0.1;  ///< paper scheme: largest spacing of hitting points on a face, m
-    ContactScheme scheme = ContactScheme::paper;  ///< in-house engine: how contact is integrated
+    ContactScheme scheme = ContactScheme::overlap;  ///< in-house engine: how contact is integrated
     int subdivision = 4;        ///< overlap scheme: sub-contacts per edge of a hitting face (n×n), count
 };
 

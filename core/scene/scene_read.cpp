@@ -119,7 +119,8 @@ ContactLaw read_contact(const TableReader& root) {
     }
     if (Item it = c.get("grid_spacing")) {
         law.grid_spacing = positive(it);
-        it.check(law.scheme == ContactScheme::paper, "applies to contact.scheme = \"paper\" only");
+        it.check(law.scheme == ContactScheme::paper,
+                 "applies to contact.scheme = \"paper\" only (the default is \"overlap\": set scheme = \"paper\" for the paper's grid of hitting points)");
     }
     if (Item it = c.get("subdivision")) {
         law.subdivision = it.small_integer();

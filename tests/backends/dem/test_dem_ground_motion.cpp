@@ -58,6 +58,9 @@ TEST_CASE("a slender block uplifts once the ground acceleration passes g·tan(al
         const double amax = ratio * 0.2 * 9.81;
         Scene s = shaken(0.2, 0.7, 1.0, 0.8, 3e9, "[0, 1, 10]",
                          "[0, " + std::to_string(amax) + ", " + std::to_string(amax) + "]");
+        // the paper's edge rows lift at the rigid threshold; a Winkler joint (the overlap scheme)
+        // starts to lift its heel at a third of it and leans before it tips
+        s.contact.scheme = ContactScheme::paper;
         auto b = test::build_dem(s);
         double worst = 0.0;
         test::run_dem(*b, 1.6, [&](const Sample& x) { worst = std::max(worst, std::abs(tilt_about_y(x.blocks[0].orientation))); });

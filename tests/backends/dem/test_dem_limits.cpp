@@ -71,6 +71,7 @@ TEST_CASE("a tiny contact.grid_spacing is refused before any allocation", "[dem]
 
 TEST_CASE("the estimate counts the mesh exactly and bounds the hitting points built", "[dem][limits]") {
     Scene s = cube_on_ground();
+    s.contact.scheme = ContactScheme::paper;   // hitting points on the paper's grid
     s.blocks[1].model = BlockModel::deformable;
     s.blocks[1].mesh.divisions = {2, 3, 4};
     const BuildEstimate est = estimate_build(s);

@@ -18,6 +18,7 @@ namespace {
 Scene rocking_scene(double w, double d, double h, double theta0, double kn) {
     Scene s = test::stone_scene(0.8);
     s.contact.kn = s.contact.ks = kn;
+    s.contact.scheme = ContactScheme::paper;   // the paper's hitting points (overlap: test_dem_winkler_rocking)
     s.run.duration = 1.0;
     test::add_box_rotated_about(s, "A", Vec3(w, d, h), Vec3(0, 0, 0.5 * h), theta0, Vec3(0.5 * w, 0, 0), false);
     test::add_box(s, "B", Vec3(2, 2, 1), Vec3(0, 0, -0.5), true);

@@ -86,9 +86,14 @@ TEST_CASE("contact scheme keys are checked against the scheme they belong to", "
                Contains("bad.toml:12: contact.grid_spacing = 0.05: applies to contact.scheme = \"paper\" only"));
     CHECK_THAT(error_of(with_line(10, "friction = 0.6\nscheme = \"overlap\"\nsubdivision = 17")),
                Contains("bad.toml:12: contact.subdivision = 17: must be an integer in [1, 16]"));
-    CHECK_THAT(error_of(with_line(10, "friction = 0.6\nsubdivision = 4")),
-               Contains("bad.toml:11: contact.subdivision = 4: applies to contact.scheme = \"overlap\" only"));
+    CHECK_THAT(error_of(with_line(10, "friction = 0.6\nscheme = \"paper\"\nsubdivision = 4")),
+               Contains("bad.toml:12: contact.subdivision = 4: applies to contact.scheme = \"overlap\" only"));
     CHECK(error_of(with_line(10, "friction = 0.6\nscheme = \"overlap\"\nsubdivision = 4")).empty());
+    // the default scheme is overlap: its key alone is fine, the paper's grid is refused with a hint
+    CHECK(error_of(with_line(10, "friction = 0.6\nsubdivision = 4")).empty());
+    CHECK_THAT(error_of(with_line(10, "friction = 0.6\ngrid_spacing = 0.05")),
+               Contains("bad.toml:11: contact.grid_spacing = 0.05: applies to contact.scheme = \"paper\" only (the "
+                        "default is \"overlap\""));
 }
 
 TEST_CASE("a missing required key names the table's line", "[scene][reject]") {
