@@ -48,10 +48,11 @@ struct PairGeometry {
             if (s != side && dist[s] > dist[side] + flush_tol + travel) return false;
         return true;
     }
-    /// true when a point with these side distances (m) lies inside the target or on its surface
+    /// true when a point with these side distances (m) lies clearly inside the target: behind
+    /// every side plane by more than the flush tolerance (a point on its surface is not)
     bool within(const double (&dist)[6]) const {
         for (double d : dist)
-            if (d > flush_tol) return false;
+            if (!(d < -flush_tol)) return false;
         return true;
     }
     /// true when side `hit_side` of the hitting block hits some side of the target (paper scheme)
