@@ -1,10 +1,8 @@
 // The paper scheme's point-to-face rule at the edge of a target side: a hitting point that lies
 // past a neighbour's edge (nearer another side plane than the one it would act on) is not pushed
-// through that side; and the target choice does not depend on block names or order.
+// through that side (renaming and reordering: test_contact_scheme_overlap.cpp, both schemes).
 #include <catch2/catch.hpp>
 
-#include "dem/block_builder.hpp"
-#include "dem/contact.hpp"
 #include "dem_test_util.hpp"
 #include "support/scene_builder.hpp"
 
@@ -13,21 +11,6 @@ using namespace cairn;
 namespace {
 
 constexpr double kKn = 3e7;   // N/m³
-
-// the total contact force (N) on block `on` from one contact evaluation of the scene
-Vec3 contact_force(const Scene& s, int on) {
-    std::vector<dem::Block> blocks;
-    for (const auto& d : s.blocks) blocks.push_back(dem::make_block(d, s));
-    for (auto& b : blocks)
-        for (auto& f : b.f) f.setZero();
-    dem::ContactSet cs;
-    cs.configure(s.contact, 0.05);
-    cs.refresh(blocks);
-    cs.apply(blocks, 1e-5);
-    Vec3 f = Vec3::Zero();
-    for (const auto& x : blocks[size_t(on)].f) f += x;
-    return f;
-}
 
 }  // namespace
 
@@ -45,7 +28,7 @@ TEST_CASE("paper scheme: a point just past a neighbour's edge is not pushed thro
     s.contact.grid_spacing = 0.1;
     add_box(s, "T", Vec3(0.4, 0.2, 0.2), Vec3(0, 0, 0.1), true);
     add_box(s, "H", Vec3(0.2, 0.1, 0.2), Vec3(0.3 - ex, 0, 0.3 - ez), false);
-    const Vec3 f = contact_force(s, 1);
+    const Vec3 f = test::contact_resultant(s, 1);
     INFO("force on H " << f.transpose() << " N");
     // what acts is the row of H's bottom over T (x = 0.19 m, tributary 0.05 x 0.1 m): kn·A·ez up;
     // exact but for round-off of positions of order 1 m (1e-9 of the force)
@@ -67,43 +50,9 @@ TEST_CASE("paper scheme: a point that comes in through its side acts on it", "[d
     s.contact.grid_spacing = 0.1;
     add_box(s, "T", Vec3(0.4, 0.2, 0.2), Vec3(0, 0, 0.1), true);
     add_box(s, "H", Vec3(0.2, 0.2, 0.2), Vec3(0.3 - ex, 0, 0.1 + ez), false);
-    const Vec3 f = contact_force(s, 1);
+    const Vec3 f = test::contact_resultant(s, 1);
     INFO("force on H " << f.transpose() << " N");
     // the whole 0.2 x 0.2 m side is over T's side (its edges flush with T's): kn·A·ex along +x
     CHECK(f.x() == Approx(kKn * 0.04 * ex).epsilon(1e-9));
     CHECK(std::abs(f.z()) < 1e-9 * kKn * 0.04 * ex);
-}
-
-TEST_CASE("paper scheme: renaming and reordering equal blocks gives the same trajectory", "[dem][contact]") {
-    // two equal bricks stacked and a third beside the lower one, touching: equal sides of equal
-    // blocks, so the target is chosen by geometry (the lower one, the one on the -x side)
-    auto wall = [](bool reversed) {
-        Scene s = test::stone_scene(0.6);
-        s.contact.scheme = ContactScheme::paper;
-        s.run.duration = 0.3;
-        const double d = 0.2 * 9.81 * 2600 / 3e7;   // static penetration of a 0.2 m block
-        struct Item { std::string name; Vec3 at; };
-        std::vector<Item> items = {{"lower", Vec3(0, 0, 0.1 - d)},
-                                   {"beside", Vec3(0.4, 0, 0.1 - d)},
-                                   {"upper", Vec3(0.15, 0.02, 0.3 - 2 * d)}};
-        if (reversed) {
-            std::swap(items[0], items[2]);
-            items[0].name = "z1", items[1].name = "m2", items[2].name = "a3";
-        }
-        for (const auto& it : items) add_box(s, it.name, Vec3(0.4, 0.2, 0.2), it.at, false);
-        const int upper = reversed ? 0 : 2;
-        s.blocks[size_t(upper)].velocity = Vec3(0.05, 0, 0);
-        add_box(s, "base", Vec3(2, 2, 0.5), Vec3(0, 0, -0.25), true);
-        auto b = test::build_dem(s);
-        std::vector<Vec3> path;
-        test::run_dem(*b, 0.3, [&](const Sample& x) { path.push_back(x.blocks[size_t(upper)].position); });
-        return path;
-    };
-    const auto a = wall(false), b = wall(true);
-    REQUIRE(a.size() == b.size());
-    double worst = 0.0;
-    for (size_t i = 0; i < a.size(); ++i) worst = std::max(worst, (a[i] - b[i]).norm());
-    INFO("largest difference " << worst << " m");
-    // the same physics; only the order of sums differs: round-off
-    CHECK(worst < 1e-10);
 }

@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "dem_test_util.hpp"
+#include "support/scene_builder.hpp"
 #include "scene/scene_io.hpp"
 #include "scene/scene_toml.hpp"
 #include "scene/wall_builder.hpp"
@@ -17,14 +18,7 @@ namespace {
 // μ 0.7, ζ 0.1, 2600 kg/m³) with the shipped El Centro record along y
 Scene wall_under_elcentro(WallBond bond, double duration) {
     Scene s;
-    s.materials.push_back({"stone", 2600.0, 30e9, 0.2});
-    s.contact.kn = s.contact.ks = 1e9;
-    s.contact.friction = 0.7;
-    s.contact.damping_rule = ContactDampingRule::ratio;
-    s.contact.damping = 0.1;
-    s.contact.scheme = ContactScheme::paper;
-    s.run.duration = duration;
-    s.run.output_interval = 0.005;
+    s.materials.push_back(test::stone());
     WallSpec w;
     w.courses = 4;
     w.bricks = 4;
@@ -32,7 +26,12 @@ Scene wall_under_elcentro(WallBond bond, double duration) {
     add_wall(s, w);
     const std::string text = scene_toml(s, "paper-scheme wall test") + "\n[ground_motion.y]\nfile = \"" CAIRN_SOURCE_DIR
                              "/scenarios/data/elcentro_1940_ns.csv\"\n";
-    return parse_scene(text, "<paper wall test>");
+    std::vector<Override> set;
+    for (const std::string kv : {"contact.kn=1e9", "contact.ks=1e9", "contact.friction=0.7", "contact.damping_ratio=0.1",
+                                 "contact.scheme=paper", "run.output_interval=0.005"})
+        set.push_back(parse_override(kv));
+    set.push_back(parse_override("run.duration=" + std::to_string(duration)));
+    return parse_scene(text, "<paper wall test>", set);
 }
 
 // the deepest a corner of one block lies inside another box, m (over every ordered pair)
