@@ -38,6 +38,23 @@ struct PairGeometry {
         set(blocks, frames, h, t, paper);
         return true;
     }
+    /// paper scheme: a point not in contact with target side `side` at the last evaluation (dist:
+    /// its signed distances to the 6 side planes, m, outward positive) enters through that side
+    /// only if no other side plane is nearer by more than the flush tolerance plus `travel` (m, the
+    /// point's move relative to the target in the step): a point first found deeper behind `side`
+    /// than behind another side came in through that other side (docs/dem.md)
+    bool enters_through(const double (&dist)[6], int side, double travel) const {
+        for (int s = 0; s < 6; ++s)
+            if (s != side && dist[s] > dist[side] + flush_tol + travel) return false;
+        return true;
+    }
+    /// true when a point with these side distances (m) lies clearly inside the target: behind
+    /// every side plane by more than the flush tolerance (a point on its surface is not)
+    bool within(const double (&dist)[6]) const {
+        for (double d : dist)
+            if (!(d < -flush_tol)) return false;
+        return true;
+    }
     /// true when side `hit_side` of the hitting block hits some side of the target (paper scheme)
     bool acts(int hit_side) const {
         for (int s = 0; s < 6; ++s)

@@ -21,6 +21,9 @@ NodeWeights face_weights(const Block& b, int k, const Vec2& xi) {
     return w;
 }
 
+// Anchor::side of a point inside the target that came in past the edge of the side it would act on
+constexpr int kCameInElsewhere = -2;
+
 }  // namespace
 
 void ContactSet::evaluate_paper(std::vector<Block>& blocks, double dt, long begin, long end, bool keep_forces) {
@@ -60,7 +63,8 @@ void ContactSet::evaluate_paper(std::vector<Block>& blocks, double dt, long begi
             const Vec3 xp = quad_point(hq, pts[k].xi);
             // the point acts on the allowed target side it lies deepest behind, if it is inside
             // the target block (behind every side plane, flush within rounding) and no other
-            // side is clearly closer (it would be entering through that side instead)
+            // side is clearly closer (it would be entering through that side instead); a point
+            // new to the side must also be entering through it (below)
             double dist[6];
             int side = -1;
             for (int s = 0; s < 6; ++s) {
@@ -89,8 +93,11 @@ void ContactSet::evaluate_paper(std::vector<Block>& blocks, double dt, long begi
             for (int s = 0; inside && s < 6; ++s)
                 if (s != side && (dist[s] > g.flush_tol || dist[s] > dist[side] + g.closer_tol)) inside = false;
             if (!inside) {
+                // a point that came in past the edge of its side stays out while inside the target
+                const bool blocked = anchor.side == kCameInElsewhere && g.within(dist);
                 leave();
                 reset(anchor);
+                if (blocked) anchor.side = kCameInElsewhere;
                 continue;
             }
             // the target face: the side's boundary face under the point (rigid: the side itself)
@@ -107,9 +114,6 @@ void ContactSet::evaluate_paper(std::vector<Block>& blocks, double dt, long begi
                 reset(anchor);
                 continue;
             }
-            const double depth_ratio = depth / std::min(hb.min_edge, tb.min_edge);
-            if (depth_ratio > tot.worst_depth) tot.worst_depth = depth_ratio, tot.worst_hit = c.hit_block, tot.worst_target = c.target_block;
-            const double a = pts[k].area;
             // relative velocity of the hitting point against the target material point
             Vec3 vh = Vec3::Zero(), vt = Vec3::Zero();
             auto wh = quad_weights(pts[k].xi), wt = quad_weights(pr.xi);
@@ -118,6 +122,19 @@ void ContactSet::evaluate_paper(std::vector<Block>& blocks, double dt, long begi
                 vt += wt[i] * tb.v[tb.mesh.faces[face][i]];
             }
             const Vec3 vrel = vh - vt;
+            // a point not acting on this side at the last evaluation must come in through it:
+            // found first nearer to another side plane (by more than this step's travel) it came
+            // in through that one, past the edge of this side, and does not act for as long as it
+            // stays inside the target (docs/dem.md)
+            if (anchor.side != side && (anchor.side == kCameInElsewhere || !g.enters_through(dist, side, vrel.norm() * dt))) {
+                leave();
+                reset(anchor);
+                anchor.side = kCameInElsewhere;
+                continue;
+            }
+            const double depth_ratio = depth / std::min(hb.min_edge, tb.min_edge);
+            if (depth_ratio > tot.worst_depth) tot.worst_depth = depth_ratio, tot.worst_hit = c.hit_block, tot.worst_target = c.target_block;
+            const double a = pts[k].area;
             const double closing = -vrel.dot(n);
             // normal: penalty spring plus dashpot, never pulling
             const double fn_el = law_.kn * a * depth;
@@ -133,7 +150,7 @@ void ContactSet::evaluate_paper(std::vector<Block>& blocks, double dt, long begi
             // shear: elastic from the stick anchor, capped at μ·Fn
             Vec3 fs = Vec3::Zero();
             if (law_.ks > 0.0 && fn > 0.0) {
-                if (anchor.side != side) {
+                if (anchor.side != side || anchor.face < 0) {
                     reset(anchor);
                     anchor.side = side;
                     anchor.face = face;
@@ -173,6 +190,7 @@ void ContactSet::evaluate_paper(std::vector<Block>& blocks, double dt, long begi
                 tot.stored += anchor.energy;
             } else {
                 reset(anchor);
+                anchor.side = side;   // no shear spring, but the point stays in contact with this side
             }
             anchor.fd = fd;
             anchor.fds = fds;

@@ -4,6 +4,8 @@
 #include <functional>
 #include <memory>
 
+#include "dem/block_builder.hpp"
+#include "dem/contact.hpp"
 #include "dem/dem_backend.hpp"
 
 namespace cairn::test {
@@ -24,6 +26,20 @@ inline bool run_dem(Backend& b, double duration, const std::function<void(const 
         on_sample(b.sample());
     }
     return true;
+}
+
+/// the resultant contact force (N) on block `on` of a scene, from one contact evaluation (0.05 m
+/// margin, dt 1e-4 s) of freshly built blocks
+inline Vec3 contact_resultant(const Scene& s, int on) {
+    std::vector<dem::Block> blocks;
+    for (const auto& d : s.blocks) blocks.push_back(dem::make_block(d, s));
+    dem::ContactSet cs;
+    cs.configure(s.contact, 0.05);
+    cs.refresh(blocks);
+    cs.apply(blocks, 1e-4);
+    Vec3 f = Vec3::Zero();
+    for (const auto& fn : blocks[size_t(on)].f) f += fn;
+    return f;
 }
 
 }  // namespace cairn::test
