@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdio>
 
+#include "contact.hpp"
 #include "dem/deformable/hex8.hpp"
 #include "error.hpp"
 #include "run/run_limits.hpp"
@@ -69,8 +70,9 @@ constexpr double kConsistentElementBytes = 2100;
 // factor is fitted to a 30x30x30 block (peak resident memory 296 MB, estimate 313 MiB; lumped
 // 58 MB against an estimate of 78 MiB)
 constexpr double kConsistentFillBytes = 192.0;
-// bytes per hitting point: the point (24), its stick anchor (24), a pending point force (48)
-constexpr double kHitBytes = 96;
+// bytes per hitting point: the point (24), its stick anchor with the last evaluation's track
+// (sizeof(Anchor), 160 on x86-64), a pending point force (48)
+constexpr double kHitBytes = 24 + double(sizeof(Anchor)) + 48;
 // bytes per point of a side's grid built once for the critical step
 constexpr double kSideGridBytes = 24;
 // bytes per boundary face: its nodes, side and grid slot
