@@ -10,6 +10,7 @@
 #include "analytic/winkler_rocking.hpp"
 #include "cases/case_kind.hpp"
 #include "cases/case_util.hpp"
+#include "metrics/signal.hpp"
 
 namespace cairn::cases {
 
@@ -52,14 +53,10 @@ double release_tilt(const Scene& scene) { return scene.reference->values.at("the
 
 /// θ of the oracle's samples at the given ascending times, linear between them (rad)
 std::vector<double> angles_at(const oracle::WinklerTrace& tr, const std::vector<double>& t) {
+    const metrics::Series theta{tr.t, tr.theta};
     std::vector<double> out;
-    size_t j = 0;
-    for (double x : t) {
-        while (j + 1 < tr.t.size() && tr.t[j + 1] < x) ++j;
-        if (j + 1 >= tr.t.size()) { out.push_back(tr.theta.back()); continue; }
-        const double f = std::clamp((x - tr.t[j]) / (tr.t[j + 1] - tr.t[j]), 0.0, 1.0);
-        out.push_back(tr.theta[j] + f * (tr.theta[j + 1] - tr.theta[j]));
-    }
+    out.reserve(t.size());
+    for (double x : t) out.push_back(metrics::interpolate(theta, x));
     return out;
 }
 

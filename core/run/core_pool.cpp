@@ -31,6 +31,14 @@ int openmp_threads() {
 #endif
 }
 
+void set_openmp_threads(int n) {
+#ifdef _OPENMP
+    omp_set_num_threads(n);
+#else
+    (void)n;
+#endif
+}
+
 CoreShare share_cores(std::size_t tasks, int jobs) {
     const int cores = machine_cores();
     CoreShare s;

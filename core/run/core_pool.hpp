@@ -25,6 +25,10 @@ CoreShare share_cores(std::size_t tasks, int jobs);
 /// built without OpenMP
 int openmp_threads();
 
+/// set the OpenMP threads of the parallel regions the calling thread starts (n ≥ 1); nothing when
+/// cairn is built without OpenMP
+void set_openmp_threads(int n);
+
 /// run task(i) for every i in [0, n) on share_cores(n, jobs).workers threads, each with its OpenMP
 /// thread count set to the share's threads; tasks for which exclusive(i) is true never overlap each
 /// other (a backend that is not thread-safe); once a stop is requested (run/stop.hpp) no new task

@@ -9,30 +9,19 @@
 #include <cmath>
 #include <memory>
 
-#ifdef _OPENMP
-#include <omp.h>
-#endif
-
 #include "bench/wall_bench.hpp"
 #include "dem/dem_backend.hpp"
 #include "dem/deformable/deformable_body.hpp"
 #include "dem/deformable/hex8_batch.hpp"
 #include "dem/mesh.hpp"
 #include "geometry/hexahedron.hpp"
+#include "run/core_pool.hpp"
 #include "scene/scene_builder.hpp"
 #include "support/scene_builder.hpp"
 
 using namespace cairn;
 
 namespace {
-
-void set_threads(int n) {
-#ifdef _OPENMP
-    omp_set_num_threads(n);
-#else
-    (void)n;
-#endif
-}
 
 // the corners of a 1 m cube, distorted (a general trilinear mesh: J⁻¹ per Gauss point) or not
 // (parallelepipeds: one J⁻¹ per element)
@@ -45,7 +34,7 @@ Corners cube(bool distorted) {
 // internal forces of an n³ mesh of a 1 m cube with a small smooth deformation; beta in µs
 void internal_force_case(benchmark::State& state, bool distorted, double beta) {
     const int n = int(state.range(0));
-    set_threads(int(state.range(1)));
+    set_openmp_threads(int(state.range(1)));
     dem::Mesh mesh = dem::make_mesh(cube(distorted), {n, n, n});
     dem::DeformableBody body(mesh, test::stone(), MassScheme::lumped, beta,
                              std::vector<char>(mesh.nodes.size(), 0));
@@ -84,7 +73,7 @@ Scene cube_scene(int n, bool on_base) {
 // whole dem steps, in element updates per second
 void steps(benchmark::State& state, bool on_base) {
     const int n = int(state.range(0));
-    set_threads(int(state.range(1)));
+    set_openmp_threads(int(state.range(1)));
     Scene s = cube_scene(n, on_base);
     auto backend = dem_backend_info().make();
     backend->build(s, RunOptions{});
@@ -103,7 +92,7 @@ void whole_step_free(benchmark::State& state) { steps(state, false); }
 // the paper's grid (sub 0: its default 0.1 m spacing) or the overlap scheme with sub×sub
 // sub-contacts per hitting face: the cost of contact at the same kn
 void wall_step(benchmark::State& state) {
-    set_threads(int(state.range(1)));
+    set_openmp_threads(int(state.range(1)));
     Scene s = bench::wall_scene(30, 10, bench::wall_setups()[1]);
     s.contact.scheme = state.range(0) == 0 ? ContactScheme::paper : ContactScheme::overlap;
     if (state.range(0) > 0) s.contact.subdivision = int(state.range(0));

@@ -6,14 +6,11 @@
 #include <random>
 #include <vector>
 
-#ifdef _OPENMP
-#include <omp.h>
-#endif
-
 #include "dem/deformable/deformable_body.hpp"
 #include "dem/deformable/hex8.hpp"
 #include "dem/deformable/hex8_batch.hpp"
 #include "dem/mesh.hpp"
+#include "run/core_pool.hpp"
 #include "support/scene_builder.hpp"
 
 using namespace cairn;
@@ -79,14 +76,6 @@ void deform(const Mesh& mesh, std::vector<Vec3>& x, std::vector<Vec3>& v, unsign
     }
 }
 
-void set_threads(int n) {
-#ifdef _OPENMP
-    omp_set_num_threads(n);
-#else
-    (void)n;
-#endif
-}
-
 void compare(const Mesh& mesh, double beta, size_t expected_parallelepipeds) {
     std::vector<char> free_nodes(mesh.nodes.size(), 0);
     DeformableBody body(mesh, kStone, MassScheme::lumped, beta, free_nodes);
@@ -99,7 +88,7 @@ void compare(const Mesh& mesh, double beta, size_t expected_parallelepipeds) {
     for (const auto& f : ref.f) scale = std::max(scale, f.norm());
     REQUIRE(scale > 1e6);
     REQUIRE(ref.energy > 0.0);
-    set_threads(1);
+    set_openmp_threads(1);
     const Result one = batched(body, x, v);
     // both are sums of ~3000 rounded products per element, in different orders: they agree to
     // a few hundred ulps of the largest force; energy and power likewise relative to their size
@@ -112,9 +101,9 @@ void compare(const Mesh& mesh, double beta, size_t expected_parallelepipeds) {
         CHECK(one.power == 0.0);
     }
     // deterministic: bit-identical on 2 threads (per-element store and fixed-order gather)
-    set_threads(2);
+    set_openmp_threads(2);
     const Result two = batched(body, x, v);
-    set_threads(1);
+    set_openmp_threads(1);
     for (size_t n = 0; n < x.size(); ++n) CHECK(two.f[n] == one.f[n]);
     CHECK(two.energy == one.energy);
     CHECK(two.power == one.power);
