@@ -30,6 +30,12 @@ double kick(RigidBody& b, const Vec3& force, const Vec3& torque, double h, doubl
     return alpha * h * (b.mass * b.v.dot(v_avg) + b.L.dot(w_avg));
 }
 
+double half_kick_energy(const RigidBody& b, const Vec3& force, const Vec3& torque, double h) {
+    const Mat3 r = b.q.toRotationMatrix();
+    const Vec3 dl = h * torque;
+    return 0.5 * h * h * force.squaredNorm() / b.mass + 0.5 * dl.dot(r * (b.inv_inertia_body * (r.transpose() * dl)));
+}
+
 Vec3 rotation_vector(const Quat& q) {
     Quat u = q.w() < 0 ? Quat(-q.w(), -q.x(), -q.y(), -q.z()) : q;
     Vec3 im = u.vec();

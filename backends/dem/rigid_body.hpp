@@ -31,6 +31,10 @@ struct RigidBody {
 /// mass-proportional damping α (1/s) treated implicitly; returns the energy dissipated, J
 double kick(RigidBody& b, const Vec3& force, const Vec3& torque, double h, double alpha);
 
+/// kinetic energy of the velocity change a half kick of h (s) under (force N, torque N·m) gives
+/// the body at its current orientation, ½·h²·(|F|²/m + τ·I⁻¹τ), J
+double half_kick_energy(const RigidBody& b, const Vec3& force, const Vec3& torque, double h);
+
 /// move the body over dt at its current momenta (translation and free rotation)
 void drift(RigidBody& b, double dt);
 

@@ -45,10 +45,22 @@ void World::start(double dt) {
 }
 
 double World::kinetic() const {
+    const double h = 0.5 * dt_;
     double e = 0.0;
-    for (const auto& b : blocks_) {
+    std::vector<Vec3> dv;
+    for (size_t i = 0; i < blocks_.size(); ++i) {
+        const Block& b = blocks_[i];
         if (b.fixed) continue;
-        e += b.deformable ? b.deformable->kinetic_energy(b.x, b.v) : b.body.kinetic_energy();
+        const bool ev = event_[i] != 0;
+        if (!b.deformable) {
+            e += b.body.kinetic_energy() -
+                 half_kick_energy(b.body, ev ? force_end_[i] : force_[i], ev ? torque_end_[i] : torque_[i], h);
+            continue;
+        }
+        const auto& a = ev ? accel_end_[i] : accel_[i];
+        dv.resize(a.size());
+        for (size_t n = 0; n < a.size(); ++n) dv[n] = h * a[n];
+        e += b.deformable->kinetic_energy(b.x, b.v) - b.deformable->kinetic_energy(b.x, dv);
     }
     return e;
 }

@@ -37,7 +37,10 @@ public:
     double time() const { return t_; }
     const std::vector<Block>& blocks() const { return blocks_; }
     const EnergyAccounts& energy() const { return energy_; }
-    /// kinetic energy, J
+    /// kinetic energy of the step, J: ½ v⁻ᵀ·M·(2v − v⁻) with v⁻ the velocity before the
+    /// end-of-step half kick, i.e. ½vᵀMv less the kinetic energy of that half kick's velocity
+    /// change, (dt²/8)·FᵀM⁻¹F: the kinetic part of the energy the central-difference step keeps
+    /// exactly under linear forces (docs/dem.md, Energy)
     double kinetic() const;
     /// gravitational potential energy (zero at the origin), J
     double potential() const;

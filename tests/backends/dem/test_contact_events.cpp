@@ -46,11 +46,12 @@ TEST_CASE("a face entering contact inside a step books exactly the spring energy
             const double d1 = phi * kSpeed * kDt;
             CHECK(e1.contact == Approx(0.5 * k * d1 * d1).epsilon(1e-9));
             // the step pushes with φ·k·d1 in its end half kick: its trapezoid work is
-            // ½·φ·k·d1·(v·dt) = ½k·d1², the stored energy; the kinetic energy then carries the
-            // kick's own (dt²/8)·F²/m (docs/dem.md, Energy), nothing else
+            // ½·φ·k·d1·(v·dt) = ½k·d1², the stored energy; the step's kinetic energy leaves out
+            // the end half kick's (dt²/8)·F²/m (docs/dem.md, Energy), so the balance does not move:
+            // 1e-3 of that term (~3e-11 J) is far above the round-off of the cube's 1.3 J
             const double f_end = phi * k * d1;
             const double shadow = kDt * kDt / 8.0 * f_end * f_end / m;
-            CHECK(e1.total() - e0.total() == Approx(shadow).epsilon(1e-6));
+            CHECK(std::abs(e1.total() - e0.total()) < 1e-3 * shadow);
             // the step's force alone (the whole k·d1 at the end) would have taken ½k·d1·gap more
             // out of the kinetic energy than the spring stores: 4 to 900 times the shadow here
             CHECK(0.5 * k * d1 * gap > 4.0 * shadow);
@@ -76,11 +77,11 @@ TEST_CASE("a face leaving contact inside a step gets back exactly the spring ene
             const Energies e1 = b->sample().energy;
             CHECK(e1.contact == 0.0);
             // first half kick k·d0, end half kick (φ − 1)·k·d0: the trapezoid work is
-            // ½·φ·k·d0·v_half·dt = ½k·d0², the energy given back; the kinetic energy carries
-            // (dt²/8)·(F_end² − F_start²)/m
+            // ½·φ·k·d0·v_half·dt = ½k·d0², the energy given back; ½mv² would carry
+            // (dt²/8)·(F_end² − F_start²)/m, which the step's kinetic energy leaves out at both ends
             const double f0 = k * d0, f_end = (phi - 1.0) * k * d0;
             const double shadow = kDt * kDt / 8.0 * (f_end * f_end - f0 * f0) / m;
-            CHECK(e1.total() - e0.total() == Approx(shadow).epsilon(1e-6));
+            CHECK(std::abs(e1.total() - e0.total()) < 1e-3 * std::abs(shadow));
             CHECK(0.5 * k * d0 * (1.0 - phi) * v_half * kDt > 4.0 * std::abs(shadow));
         }
     }
