@@ -123,6 +123,8 @@ public:
     const std::vector<Candidate>& candidates() const { return candidates_; }
     /// broad-phase margin, m
     double margin() const { return margin_; }
+    /// change the margin (m) the next refresh grows the boxes by
+    void set_margin(double margin) { margin_ = margin; }
     /// keep every point's force in its candidate (Candidate::forces) also on one thread, for output
     void keep_forces(bool keep) { keep_forces_ = keep; }
     /// overlap scheme: leave out at each refresh the faces that cannot reach their target before

@@ -15,7 +15,7 @@ constexpr long kParallelBlocks = 2048;
 
 }  // namespace
 
-World::World(const Scene& scene, double margin) : scene_(scene) {
+World::World(const Scene& scene, double margin) : scene_(scene), margin_(margin) {
     for (const auto& def : scene.blocks) blocks_.push_back(make_block(def, scene));
     for (const auto& p : scene.probes) probes_.push_back(locate(blocks_[p.block], p.block, p.point));
     for (const auto& l : scene.loads) loads_.push_back(locate(blocks_[l.block], l.block, l.point));
@@ -113,33 +113,36 @@ bool World::step() {
 // stage: refresh the contact candidates every n steps, or sooner if the margin could be crossed
 void World::refresh_if_due() {
     ++steps_since_refresh_;
-    bool due = steps_since_refresh_ >= scene_.run.contact_interval;
-    if (!due) {
-        // the check runs before this step's move: add a bound on it (speed × dt)
-        auto speed = [](const Block& b) {
-            if (!b.deformable) return b.body.v.norm() + b.r_max * b.body.omega().norm();
-            double v = 0.0;
-            for (const auto& vn : b.v) v = std::max(v, vn.norm());
-            return v;
-        };
-        const long count = long(blocks_.size());
-        // overlap scheme: also before a block turns by kRefreshTurn (the refresh leaves out the
-        // sides that cannot face each other within that turn)
-        auto spin = [](const Block& b) { return b.deformable ? 0.0 : b.body.omega().norm(); };
-        const double half = 0.5 * contacts_.margin();
-        const bool turns = prune_ && scene_.contact.scheme == ContactScheme::overlap;
-        bool early = false, turned = false;
-#pragma omp parallel for schedule(static) reduction(|| : early, turned) if (count >= kParallelBlocks)
-        for (long i = 0; i < count; ++i) {
-            const Block& b = blocks_[size_t(i)];
-            if (b.fixed) continue;
-            if (b.motion_since_refresh() + speed(b) * dt_ > half) early = true;
-            if (turns && b.turn_since_refresh() + spin(b) * dt_ > kRefreshTurn) turned = true;
-        }
-        if (early) ++early_refreshes_;   // counted: a margin too small for the motion
-        due = early || turned;
+    // the check runs before this step's move: add a bound on it (speed × dt)
+    auto speed = [](const Block& b) {
+        if (!b.deformable) return b.body.v.norm() + b.r_max * b.body.omega().norm();
+        double v = 0.0;
+        for (const auto& vn : b.v) v = std::max(v, vn.norm());
+        return v;
+    };
+    const long count = long(blocks_.size());
+    // overlap scheme: also before a block turns by kRefreshTurn (the refresh leaves out the
+    // sides that cannot face each other within that turn)
+    auto spin = [](const Block& b) { return b.deformable ? 0.0 : b.body.omega().norm(); };
+    const double half = 0.5 * contacts_.margin();
+    const bool turns = prune_ && scene_.contact.scheme == ContactScheme::overlap;
+    bool early = false, turned = false;
+    double fastest = 0.0;   // the largest move of a block in this step, m
+#pragma omp parallel for schedule(static) reduction(|| : early, turned) reduction(max : fastest) if (count >= kParallelBlocks)
+    for (long i = 0; i < count; ++i) {
+        const Block& b = blocks_[size_t(i)];
+        if (b.fixed) continue;
+        const double move = speed(b) * dt_;
+        fastest = std::max(fastest, move);
+        if (b.motion_since_refresh() + move > half) early = true;
+        if (turns && b.turn_since_refresh() + spin(b) * dt_ > kRefreshTurn) turned = true;
     }
-    if (!due) return;
+    const bool due = steps_since_refresh_ >= scene_.run.contact_interval;
+    if (early && !due) ++early_refreshes_;   // counted: a margin too small for the motion
+    if (!(due || early || turned)) return;
+    // a block that moves more than half the scene's margin in one step would cross it before the
+    // next check: the boxes grow by four of its steps' move until it slows down
+    contacts_.set_margin(2.0 * fastest > margin_ ? 4.0 * fastest : margin_);
     contacts_.refresh(blocks_);
     steps_since_refresh_ = 0;
 }

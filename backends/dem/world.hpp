@@ -63,7 +63,9 @@ public:
     /// penetrating hitting points of the last force evaluation with their forces (empty unless
     /// record_contacts(true)); block_a is the hitting block, the normal that of the target face
     std::vector<ContactPoint> contact_points() const;
-    /// contact refreshes forced early because a block moved more than half the margin
+    /// contact refreshes forced early because a block moved (or was about to move) more than half
+    /// the margin; where a block moves more than half the margin in one step, the refresh grows the
+    /// margin to four steps' move of the fastest block, so that no contact is missed
     int early_refreshes() const { return early_refreshes_; }
     /// element updates done so far (deformable blocks)
     long long element_updates() const { return element_updates_; }
@@ -79,6 +81,7 @@ private:
     std::string inversion_message(size_t block) const;
 
     const Scene& scene_;
+    double margin_ = 0.0;   // the scene's broad-phase margin, m
     double dt_ = 0.0;
     double t_ = 0.0;
     int steps_since_refresh_ = 0;
