@@ -19,7 +19,8 @@ TEST_CASE("a semicircular arch of twice Heyman's minimum thickness stands on its
             worst = std::max(worst, (x.blocks[i].position - start.blocks[i].position).norm());
     }));
     // t/R = 0.22 > 0.106: a thrust line fits; the joints (kn = 1e9 N/m³) close elastically under
-    // the thrust by about a millimetre (measured 1.1 mm at the crown), nothing slides or hinges
+    // the thrust by about a millimetre (measured 1.6 mm at the crown at most, 1.0 mm at rest),
+    // nothing slides or hinges
     CHECK(crown_drop < 3e-3);
     CHECK(worst < 3e-3);
     CHECK(b->sample().contacts > 100);   // every joint closed over its whole face
