@@ -48,6 +48,21 @@ struct StudyInertiaOptions {
 /// `cairn study inertia`: every mass scheme x mesh on the rocking and impact scenes (docs/inertia.md)
 int study_inertia_command(const StudyInertiaOptions& options);
 
+/// Options of `cairn study contact`.
+struct StudyContactOptions {
+    std::string out_dir = "out/contact";   ///< contact.csv, contact.md, contact.html, figures/
+    std::vector<double> kns;               ///< N/m³; empty = 3e7, 3e8, 3e9
+    std::vector<double> spacings;          ///< paper grid spacings, m; empty = 0.2, 0.1, 0.05, 0.025
+    std::vector<int> subdivisions;         ///< overlap sub-divisions; empty = 1, 2, 4, 8
+    int repeats = 3;                       ///< runs per point; the wall time is their median
+    int jobs = 2;                          ///< runs at a time
+    bool quiet = false;                    ///< no progress lines
+};
+
+/// `cairn study contact`: the paper's grid against the overlap integral on the rocking block
+/// (docs/studies.md)
+int study_contact_command(const StudyContactOptions& options);
+
 /// Options of `cairn study overturning` (docs/cli.md).
 struct StudyOverturningOptions {
     std::string scene;                    ///< a scene with one free block on a fixed base, or empty
@@ -85,6 +100,8 @@ int study_record_command(const StudyRecordOptions& options);
 CLI::App* add_study_record(CLI::App& study, StudyRecordOptions& options);
 /// declare `study overturning` and its options under `study`
 CLI::App* add_study_overturning(CLI::App& study, StudyOverturningOptions& options);
+/// the `study contact` subcommand and its options
+CLI::App* add_study_contact(CLI::App& study, StudyContactOptions& options);
 
 /// Options of `cairn validate`.
 struct ValidateOptions {
@@ -95,6 +112,7 @@ struct ValidateOptions {
     int jobs = 2;                             ///< runs at a time
     bool quiet = false;                       ///< no progress lines
     std::string study_dir;                    ///< inertia study to include (default: DIR/study if present)
+    std::string contact_dir;                  ///< contact study to include (default: DIR/contact if present)
     std::string bench_dir;                    ///< bench results to include (default: DIR/bench if present)
 };
 

@@ -67,6 +67,8 @@ int main(int argc, char** argv) {
     study_inertia->add_option("--jobs,-j", inertia.jobs, "runs at a time (default 2)")->check(CLI::Range(1, 64));
     study_inertia->add_option("--n", inertia.ns, "elements per side (default 1,2,4,8)")->delimiter(',');
     study_inertia->add_flag("--quiet,-q", inertia.quiet, "no progress lines");
+    StudyContactOptions contact;
+    auto* study_contact = add_study_contact(*study, contact);
     StudyOverturningOptions overturning;
     auto* study_overturning = add_study_overturning(*study, overturning);
     StudyRecordOptions record;
@@ -107,6 +109,8 @@ int main(int argc, char** argv) {
     validate->add_flag("--quiet,-q", val.quiet, "no progress lines");
     validate->add_option("--study", val.study_dir,
                          "include the inertia study written there by `cairn study inertia` (default: DIR/study if present)");
+    validate->add_option("--contact", val.contact_dir,
+                         "include the contact study written there by `cairn study contact` (default: DIR/contact if present)");
     validate->add_option("--bench", val.bench_dir,
                          "include the bench results written there by `cairn bench` (default: DIR/bench if present)");
 
@@ -197,6 +201,7 @@ int main(int argc, char** argv) {
         if (app.got_subcommand(replay_cmd)) return replay_command(replay);
         if (app.got_subcommand(run_all)) return run_all_command(all);
         if (study_inertia->parsed()) return study_inertia_command(inertia);
+        if (study_contact->parsed()) return study_contact_command(contact);
         if (study_overturning->parsed()) return study_overturning_command(overturning);
         if (study_record->parsed()) return study_record_command(record);
         if (app.got_subcommand(validate)) return validate_command(val);

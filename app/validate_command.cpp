@@ -17,6 +17,7 @@
 #include "report/figures.hpp"
 #include "bench/bench_report.hpp"
 #include "report/validation_report.hpp"
+#include "study/contact_report.hpp"
 #include "study/study_report.hpp"
 #include "scene/scene_io.hpp"
 #include "scenes.hpp"
@@ -139,6 +140,9 @@ int validate_command(const ValidateOptions& options) {
     const auto [bench_dir, bench_prefix] = where(options.bench_dir, "bench");
     if (!study::add_inertia_report_section(doc, study_dir.string(), study_prefix) && !options.study_dir.empty())
         std::cerr << "note: no inertia study in " << options.study_dir << " (run cairn study inertia --out there)\n";
+    const auto [contact_dir, contact_prefix] = where(options.contact_dir, "contact");
+    if (!study::add_contact_report_section(doc, contact_dir.string(), contact_prefix) && !options.contact_dir.empty())
+        std::cerr << "note: no contact study in " << options.contact_dir << " (run cairn study contact --out there)\n";
     const bool has_bench = fs::exists(bench_dir / "trade.csv") || fs::exists(bench_dir / "stability.csv") ||
                            fs::exists(bench_dir / "wall.csv");
     if (has_bench)

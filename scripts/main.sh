@@ -8,5 +8,6 @@ cd "$(dirname "$0")/.."
 bash scripts/setup.sh
 cairn="${CAIRN_BUILD_DIR:-build}/app/cairn"
 "$cairn" study inertia --out out/validation/study --quiet
+"$cairn" study contact --out out/validation/contact --quiet
 "$cairn" bench all --out out/validation/bench --quiet
 "$cairn" validate --out out/validation
