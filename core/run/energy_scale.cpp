@@ -36,15 +36,16 @@ EnergyScale::EnergyScale(const Scene& scene) : gravity_reach_(gravity_reach(scen
 EnergyBounds EnergyScale::add(const Energies& e) {
     const double motion = std::abs(e.kinetic) + std::abs(e.contact) + std::abs(e.strain);
     if (first_) {
-        motion_max_ = motion;
-        potential_min_ = potential_max_ = e.potential;
+        motion_max_ = initial_motion_ = motion;
+        potential_min_ = potential_max_ = potential_first_ = e.potential;
         first_ = false;
     }
     potential_min_ = std::min(potential_min_, e.potential);
     potential_max_ = std::max(potential_max_, e.potential);
+    work_max_ = std::max(work_max_, std::abs(e.external));
     EnergyBounds b;
     b.motion = std::max(kMinScale, motion_max_ + std::abs(e.external) + (potential_max_ - potential_min_));
-    b.growth = b.motion + gravity_reach_;
+    b.growth = std::max(kMinScale, initial_motion_ + work_max_ + (potential_first_ - potential_min_)) + gravity_reach_;
     motion_max_ = std::max(motion_max_, motion);
     return b;
 }

@@ -13,8 +13,12 @@ struct EnergyBounds {
     /// plus |work of the loads| now, plus the potential energy actually exchanged (max − min of
     /// the potential over the run up to this sample), at least 1 J. The drift flag's scale.
     double motion = 0.0;
-    /// `motion` plus Σ m·g·(diameter) of the free blocks (all the energy gravity could still
-    /// release): the bar for energy growing without a source, which stops a run
+    /// the energy the run's sources can have put in: the first sample's kinetic + contact +
+    /// strain, plus the largest |work of the loads| so far, plus the potential energy gravity
+    /// released (first sample's potential − the lowest since), plus Σ m·g·(diameter) of the free
+    /// blocks; at least 1 J. The bar for energy growing without a source, which stops a run. It
+    /// leaves out the motion seen so far: energy created by an unstable step would otherwise
+    /// raise the bar it is measured against (a block launched by the step, then flying)
     double growth = 0.0;
 };
 
@@ -32,6 +36,9 @@ private:
     double gravity_reach_ = 0.0;    // J
     double motion_max_ = 0.0;       // largest |kinetic| + |contact| + |strain| so far, J
     double potential_min_ = 0.0, potential_max_ = 0.0;   // J
+    double initial_motion_ = 0.0;    // |kinetic| + |contact| + |strain| of the first sample, J
+    double potential_first_ = 0.0;   // J
+    double work_max_ = 0.0;          // largest |work of the loads| so far, J
     bool first_ = true;
 };
 
