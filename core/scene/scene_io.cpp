@@ -87,6 +87,22 @@ void apply_override(toml::table& root, const Override& o, scene_detail::Sources&
     t->insert_or_assign(parts.back(), std::move(*parsed.get("v")));
 }
 
+// a --set contact.scheme that switches the scheme drops the file's key of the other scheme
+// (grid_spacing of "paper", subdivision of "overlap"), which would otherwise refuse the switch;
+// the same key given by another --set is still checked against the scheme
+void drop_other_scheme_keys(toml::table& root, const std::vector<Override>& overrides) {
+    toml::table* contact = root["contact"].as_table();
+    if (!contact) return;
+    for (const auto& o : overrides) {
+        if (o.key != "contact.scheme") continue;
+        std::string v = o.value;
+        if (v.size() >= 2 && (v.front() == '"' || v.front() == '\'') && v.back() == v.front())
+            v = v.substr(1, v.size() - 2);
+        if (v == "paper") contact->erase("subdivision");
+        else if (v == "overlap") contact->erase("grid_spacing");
+    }
+}
+
 }  // namespace
 
 void apply_model(Scene& scene, const std::string& model) {
@@ -130,6 +146,7 @@ Scene parse_scene(const std::string& toml_text, const std::string& source,
         throw Error(source + ":" + std::to_string(at.line) + ":" + std::to_string(at.column) +
                     ": TOML syntax error: " + std::string(e.description()));
     }
+    drop_other_scheme_keys(root, overrides);
     for (const auto& o : overrides) apply_override(root, o, src);
     return scene_detail::read_scene(src, root, source);
 }

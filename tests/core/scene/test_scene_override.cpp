@@ -57,3 +57,28 @@ TEST_CASE("an override through a value that is not a table is rejected", "[scene
     std::string msg = test::error_of(test::kBaseScene, {parse_override("contact.kn.x=1")});
     CHECK_THAT(msg, Contains("--set contact.kn.x") && Contains("contact.kn is not a table"));
 }
+
+TEST_CASE("a contact.scheme override switches a scene that gives the other scheme's key", "[scene][override]") {
+    auto parse = [](const std::string& contact, const std::vector<std::string>& sets) {
+        std::string text = test::kBaseScene;
+        const auto at = text.find("[contact]\n");
+        REQUIRE(at != std::string::npos);
+        text.insert(at + 10, contact);
+        std::vector<Override> o;
+        for (const auto& s : sets) o.push_back(parse_override(s));
+        return parse_scene(text, "base.toml", o);
+    };
+    // a made arch states scheme = "overlap" with its subdivision: the paper scheme drops it
+    const Scene paper = parse("scheme = \"overlap\"\nsubdivision = 1\n", {"contact.scheme=paper"});
+    CHECK(paper.contact.scheme == ContactScheme::paper);
+    const Scene overlap = parse("scheme = \"paper\"\ngrid_spacing = 0.05\n", {"contact.scheme=\"overlap\""});
+    CHECK(overlap.contact.scheme == ContactScheme::overlap);
+    // the other scheme's key given on the command line is still refused, in either order
+    CHECK_THROWS_WITH(parse("scheme = \"overlap\"\n", {"contact.scheme=paper", "contact.subdivision=2"}),
+                      Contains("--set contact.subdivision") && Contains("applies to contact.scheme = \"overlap\" only"));
+    CHECK_THROWS_WITH(parse("scheme = \"overlap\"\n", {"contact.subdivision=2", "contact.scheme=paper"}),
+                      Contains("applies to contact.scheme = \"overlap\" only"));
+    // without the switch the file's contradiction is still an error
+    CHECK_THROWS_WITH(parse("scheme = \"paper\"\nsubdivision = 4\n", {}),
+                      Contains("applies to contact.scheme = \"overlap\" only"));
+}
