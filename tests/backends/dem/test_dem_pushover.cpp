@@ -101,7 +101,7 @@ TEST_CASE("overlap scheme: a wall on penalty joints tips at the Winkler toe's pe
     const auto r = pushover("wall_pushover", completed, {{"contact.scheme", "\"overlap\""}}, &balance);
     CHECK(completed);
     INFO("max balance error " << balance << " of the motion energy");
-    CHECK(balance < kClosure);
+    CHECK(balance < kClosure);   // measured 7.3e-4: the bricks' fall after tipping (docs/dem.md, Energy)
     REQUIRE(!r.metrics.empty());
     const double t = 0.2, h = 0.8, l = 1.6, kn = 1e9, g = 9.81;
     const double w = 2600.0 * t * h * l * g;   // every course fills the 1.6 m (half-brick closers)
