@@ -48,7 +48,7 @@ struct Material {
 /// Mesh of a deformable block (used when model = deformable).
 struct MeshDef {
     std::array<int, 3> divisions{1, 1, 1};   ///< hex8 elements along the block-frame axes
-    MassScheme mass = MassScheme::lumped;    ///< mass assembly
+    MassScheme mass = MassScheme::corrected; ///< mass assembly (corrected: exact rotational inertia at any mesh)
     std::vector<int> fixed_nodes;            ///< node indices held at rest (mesh numbering, docs/scenes.md)
     bool fix_base = false;                   ///< hold every node of the bottom face (ζ = -1 face) at rest
 };
