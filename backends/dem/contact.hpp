@@ -3,7 +3,7 @@
 /// bounding boxes every n steps; each step either scheme (docs/dem.md) turns them into forces:
 /// - overlap: each hitting face is cut into n×n sub-cells; a sub-cell's part behind the target
 ///   face and over it carries the exact integral of kn·d (closed form) at its pressure centre,
-///   and an elastic-then-Coulomb shear spring from its own stick anchor;
+///   and an elastic-then-Coulomb shear spring from its own stick anchor at its area's centroid;
 /// - paper: the paper's node-to-face rule on a grid of hitting points, each with a penalty normal
 ///   force and a shear spring from a stick anchor in the target face's natural coordinates.
 
@@ -54,15 +54,16 @@ struct SubAnchor {
     double fel = 0.0;           ///< elastic normal force kn·∫d dA at the last evaluation, N
     double stored = 0.0;        ///< normal-spring energy ½kn·∫d² dA at the last evaluation, J
     Vec3 normal = Vec3::UnitZ();///< the target's outward normal at the last evaluation
-    NodeWeights hit_at, target_at;  ///< where its force acted at the last evaluation
+    NodeWeights hit_at, target_at;  ///< where its normal force acted at the last evaluation
 };
 
-/// The force of one sub-contact, kept until it is spread to the nodes: both blocks take it at the
-/// same point, so the pair is collinear.
+/// The force of one sub-contact, kept until it is spread to the nodes: both blocks take its normal
+/// part on one line along the normal and its shear part at one point, so the pairs are collinear.
 struct SubForce {
-    NodeWeights hit, target;    ///< where it acts on each block
+    NodeWeights hit, target;    ///< where its shear part acts on each block (the clipped area's centroid)
     Vec3 force = Vec3::Zero();  ///< on the hitting block (the target takes −force), N
     Vec3 normal = Vec3::UnitZ();///< the target face's outward unit normal
+    NodeWeights hit_n, target_n;///< where its normal part acts (the pressure centre; docs/dem.md "scheme = overlap")
 };
 
 /// Energies and counts of one contact evaluation.

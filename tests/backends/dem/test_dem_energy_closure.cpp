@@ -116,8 +116,16 @@ TEST_CASE("a deformable arch closes the energy balance, overlap scheme", "[dem][
 }
 
 TEST_CASE("a deformable arch near its thinnest closes the energy balance, overlap scheme", "[dem][energy]") {
-    // arch_thick (one sub-contact per face like this one) misses it: docs/dem.md, Energy
     check_closes({"structures/arch_thin"}, {"overlap"}, "deformable");
+}
+
+TEST_CASE("a deformable arch just above its thinnest closes the energy balance, overlap scheme", "[dem][energy]") {
+    // one sub-contact per joint face on hex8 blocks: it gained 48 % of its motion energy while
+    // the normal force of a warped element face, applied at the pressure centre by the shape
+    // functions, was not the gradient of the energy booked for it, and 0.96 % (first order in
+    // dt) while the shear spring acted at the pressure centre (docs/dem.md, "scheme = overlap");
+    // measured 0.021 %
+    check_closes({"structures/arch_thick"}, {"overlap"}, "deformable");
 }
 
 TEST_CASE("a deformable column closes the energy balance under El Centro", "[dem][energy]") {
