@@ -6,6 +6,7 @@
 
 #include "contact.hpp"
 #include "contact_overlap.hpp"
+#include "contact_overlap_edge.hpp"
 #include "contact_reach.hpp"
 
 namespace cairn::dem {
@@ -71,9 +72,15 @@ void ContactSet::evaluate_overlap(std::vector<Block>& blocks, double dt, long be
                     for (int i = 0; i < 4; ++i) flat[i] = tq[i] - nt.dot(tq[i] - ct) * nt;
                     int nc = side_count;
                     cons[nc++] = Affine{-nt, nt.dot(ct)};   // behind the face: d ≥ 0
-                    for (int i = 0; i < 4; ++i) {           // over the face: inside each edge
+                    // over the face: inside each edge; a face that is the whole side within the
+                    // flush tolerance, as the other sides' planes (a face flush with the edge of
+                    // an equal one is bounded by its own edge, which moves with it, and not by the
+                    // target's, whose edge force would come and go as rounding moves one past
+                    // the other: the arches' joints)
+                    const double edge_tol = whole ? g.flush_tol : 0.0;
+                    for (int i = 0; i < 4; ++i) {
                         const Vec3 a = nt.cross(flat[(i + 1) % 4] - flat[i]).normalized();
-                        cons[nc++] = Affine{a, -a.dot(flat[i])};
+                        cons[nc++] = Affine{a, -a.dot(flat[i]) + edge_tol};
                     }
                     if (missed_by(cons.data() + side_count, cons.data() + nc)) continue;
                     for (int v = 0; v < n; ++v)
@@ -84,7 +91,7 @@ void ContactSet::evaluate_overlap(std::vector<Block>& blocks, double dt, long be
                                       grid[(v + 1) * (n + 1) + u]};
                             bool empty = false;
                             for (int k = 0; k < nc && !empty; ++k) {
-                                clip(poly, cons[k]);
+                                clip(poly, cons[k], k);
                                 empty = poly.n < 3;
                             }
                             if (empty) continue;
@@ -116,19 +123,23 @@ void ContactSet::evaluate_overlap(std::vector<Block>& blocks, double dt, long be
                                 anchor = &c.subs.back();
                             }
                             anchor->seen = true;
-                            // the pressure centre on the target plane: both blocks are pushed there
-                            const Vec3 xs = in.pressure_centre();
+                            // the pressure centre on the target plane, moved by the tilt couple: both
+                            // blocks are pushed there
+                            const Vec3 xs = in.action_point();
                             const NodeWeights wh = node_weights(hb, c.hit_face, xs), wt = node_weights(tb, tf, xs);
                             const Vec3 vrel = wh.velocity(hb) - wt.velocity(tb);
                             const double closing = -vrel.dot(nt);
+                            // the step's relative velocity where the last evaluation's forces
+                            // acted: the leapfrog step does their work there (zero when fresh)
+                            const Vec3 vrel_last = anchor->hit_at.velocity(hb) - anchor->target_at.velocity(tb);
                             // normal: the exact integral of kn·d, plus the dashpot, never pulling
                             const double fn_el = law_.kn * in.d1;
                             const double fn = std::max(0.0, fn_el + cn_area * in.area * closing);
-                            // the dashpot's work as the leapfrog step does it: the mean of
-                            // its forces at both ends of the step times the step's closing
+                            // the dashpot's work as the leapfrog step does it: half of each end's
+                            // force times the step's closing where that force acted
                             const double fd = fn - fn_el;
                             Vec3 fds = Vec3::Zero();
-                            tot.dissipated += 0.5 * (anchor->fd + fd) * closing * dt;
+                            tot.dissipated += 0.5 * (fd * closing - anchor->fd * vrel_last.dot(anchor->normal)) * dt;
                             anchor->fd = fd;
                             tot.stored += 0.5 * law_.kn * in.d2;
                             // a sub-contact that entered in this step pushed only for part of it:
@@ -160,12 +171,15 @@ void ContactSet::evaluate_overlap(std::vector<Block>& blocks, double dt, long be
                                 Vec3 u_t = anchor->u - anchor->u.dot(nt) * nt + vt_rel * dt;
                                 // the spring's stiffness ks·A follows the contact area; the offset
                                 // is scaled so that a change of area neither makes nor takes spring
-                                // energy (½ks·A·u² kept: u scaled by √(A_old/A))
+                                // energy (½ks·A·u² kept: u scaled by √(A_old/A)), and its growth over
+                                // the step by the step's mean √A (s = √A·u grows by √A·v·dt: with
+                                // √A_old alone the step's work missed the spring's energy by
+                                // ½ks·(√A − √A_old)·√A·u·v·dt, first order where areas change fast)
                                 Vec3 u_old = anchor->u - anchor->u.dot(nt) * nt;
                                 if (!lay && anchor->area > 0.0) {
                                     const double scale = std::sqrt(anchor->area / in.area);
-                                    u_t *= scale;
                                     u_old *= scale;
+                                    u_t = u_old + (0.5 * (1.0 + scale)) * vt_rel * dt;
                                 }
                                 anchor->area = in.area;
                                 const double ks_a = law_.ks * in.area;
@@ -187,7 +201,7 @@ void ContactSet::evaluate_overlap(std::vector<Block>& blocks, double dt, long be
                                     anchor->u = u_t;
                                     anchor->energy = 0.5 * ks_a * u_t.squaredNorm();
                                     fds = fs - f_el;
-                                    tot.dissipated -= 0.5 * (anchor->fds + fds).dot(vt_rel) * dt;
+                                    tot.dissipated -= 0.5 * (fds.dot(vt_rel) + anchor->fds.dot(vrel_last)) * dt;
                                 }
                                 tot.stored += anchor->energy;
                             } else {
@@ -203,6 +217,24 @@ void ContactSet::evaluate_overlap(std::vector<Block>& blocks, double dt, long be
                             } else {
                                 wh.add(hb, force);
                                 wt.add(tb, -force);
+                            }
+                            // where the polygon ends on a constraint fixed to the target (a target
+                            // face's edge, another side's plane) with depth, U changes as the
+                            // face moves over it: the boundary term of the gradient, on both blocks
+                            // at the edge's hitting points (the cell's own edges move with it, and
+                            // d = 0 on the depth cut)
+                            for (int i = 0; i < poly.n; ++i) {
+                                const int k = int(poly.by[size_t(i)]) - 1;
+                                if (k < 0 || k == side_count) continue;
+                                const EdgeForce e = edge_force(poly, i, ct, nt, cons[size_t(k)], in.slope, law_.kn);
+                                if (e.force.isZero(0.0)) continue;
+                                const NodeWeights eh = node_weights(hb, c.hit_face, e.point), et = node_weights(tb, tf, e.point);
+                                if (keep_forces) {
+                                    c.sub_forces.push_back({eh, et, e.force, nt});
+                                } else {
+                                    eh.add(hb, e.force);
+                                    et.add(tb, -e.force);
+                                }
                             }
                             ++tot.active;
                         }
