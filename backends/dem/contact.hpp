@@ -57,8 +57,9 @@ struct SubAnchor {
     NodeWeights hit_at, target_at;  ///< where its force acted at the last evaluation
 };
 
-/// The force of one sub-contact, kept until it is spread to the nodes: both blocks take it at the
-/// same point, so the pair is collinear.
+/// The force of one sub-contact, or the edge force of one of its edges on the target's edge,
+/// kept until it is spread to the nodes: both blocks take it at the same point, so the pair is
+/// collinear.
 struct SubForce {
     NodeWeights hit, target;    ///< where it acts on each block
     Vec3 force = Vec3::Zero();  ///< on the hitting block (the target takes −force), N
