@@ -129,17 +129,14 @@ void ContactSet::evaluate_overlap(std::vector<Block>& blocks, double dt, long be
                             const NodeWeights wh = node_weights(hb, c.hit_face, xs), wt = node_weights(tb, tf, xs);
                             const Vec3 vrel = wh.velocity(hb) - wt.velocity(tb);
                             const double closing = -vrel.dot(nt);
-                            // the step's relative velocity where the last evaluation's forces
-                            // acted: the leapfrog step does their work there (zero when fresh)
-                            const Vec3 vrel_last = anchor->hit_at.velocity(hb) - anchor->target_at.velocity(tb);
                             // normal: the exact integral of kn·d, plus the dashpot, never pulling
                             const double fn_el = law_.kn * in.d1;
                             const double fn = std::max(0.0, fn_el + cn_area * in.area * closing);
-                            // the dashpot's work as the leapfrog step does it: half of each end's
-                            // force times the step's closing where that force acted
+                            // the dashpot's work as the leapfrog step does it: the mean of
+                            // its forces at both ends of the step times the step's closing
                             const double fd = fn - fn_el;
                             Vec3 fds = Vec3::Zero();
-                            tot.dissipated += 0.5 * (fd * closing - anchor->fd * vrel_last.dot(anchor->normal)) * dt;
+                            tot.dissipated += 0.5 * (anchor->fd + fd) * closing * dt;
                             anchor->fd = fd;
                             tot.stored += 0.5 * law_.kn * in.d2;
                             // a sub-contact that entered in this step pushed only for part of it:
@@ -201,7 +198,7 @@ void ContactSet::evaluate_overlap(std::vector<Block>& blocks, double dt, long be
                                     anchor->u = u_t;
                                     anchor->energy = 0.5 * ks_a * u_t.squaredNorm();
                                     fds = fs - f_el;
-                                    tot.dissipated -= 0.5 * (fds.dot(vt_rel) + anchor->fds.dot(vrel_last)) * dt;
+                                    tot.dissipated -= 0.5 * (anchor->fds + fds).dot(vt_rel) * dt;
                                 }
                                 tot.stored += anchor->energy;
                             } else {
