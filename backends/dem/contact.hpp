@@ -57,8 +57,10 @@ struct SubAnchor {
     NodeWeights hit_at, target_at;  ///< where its normal force acted at the last evaluation
 };
 
-/// The force of one sub-contact, kept until it is spread to the nodes: both blocks take its normal
-/// part on one line along the normal and its shear part at one point, so the pairs are collinear.
+/// The force of one sub-contact, or the edge force of one of its edges on the target's edge,
+/// kept until it is spread to the nodes: both blocks take its normal part on one line along the
+/// normal and its shear part at one point (an edge force: both at its point), so the pairs are
+/// collinear.
 struct SubForce {
     NodeWeights hit, target;    ///< where its shear part acts on each block (the clipped area's centroid)
     Vec3 force = Vec3::Zero();  ///< on the hitting block (the target takes −force), N

@@ -4,7 +4,7 @@
 
 namespace cairn::dem {
 
-void clip(ClipPolygon& poly, const Affine& g) {
+void clip(ClipPolygon& poly, const Affine& g, int label) {
     if (poly.n == 0) return;
     std::array<double, ClipPolygon::kMaxVertices> val;
     bool all_in = true, all_out = true;
@@ -19,19 +19,26 @@ void clip(ClipPolygon& poly, const Affine& g) {
         return;
     }
     ClipPolygon out;
+    // each vertex kept carries on its edge's label; a cut point leaving the region starts the
+    // edge along g = 0 (labelled by g), one entering it carries on the edge it lies on
+    const unsigned char cut = static_cast<unsigned char>(label + 1);
     for (int i = 0; i < poly.n; ++i) {
         const int j = (i + 1) % poly.n;
         const bool in_i = val[i] >= 0.0, in_j = val[j] >= 0.0;
-        if (in_i && out.n < ClipPolygon::kMaxVertices) out.p[out.n++] = poly.p[i];
+        if (in_i && out.n < ClipPolygon::kMaxVertices) {
+            out.by[out.n] = poly.by[i];
+            out.p[out.n++] = poly.p[i];
+        }
         if (in_i != in_j && out.n < ClipPolygon::kMaxVertices) {
             // the edge crosses g = 0: one cut point, linear along the edge
             const double s = val[i] / (val[i] - val[j]);
+            out.by[out.n] = in_i ? cut : poly.by[i];
             out.p[out.n++] = poly.p[i] + s * (poly.p[j] - poly.p[i]);
         }
     }
     // only the vertices in use (a whole polygon is 24 of them)
     poly.n = out.n;
-    for (int i = 0; i < out.n; ++i) poly.p[i] = out.p[i];
+    for (int i = 0; i < out.n; ++i) poly.p[i] = out.p[i], poly.by[i] = out.by[i];
 }
 
 OverlapIntegrals integrate_depth(const ClipPolygon& poly, const Vec3& c, const Vec3& n) {
@@ -51,6 +58,10 @@ OverlapIntegrals integrate_depth(const ClipPolygon& poly, const Vec3& c, const V
         const double q = d[0] * d[0] + d[i] * d[i] + d[i + 1] * d[i + 1];
         const Vec3 sx = x[0] + x[i] + x[i + 1];
         const Vec3 xd = d[0] * x[0] + d[i] * x[i] + d[i + 1] * x[i + 1];
+        // a·∇d of the triangle, ∇λ_k = n × (opposite edge) / 2a
+        const Vec3 a_grad = 0.5 * n.cross(d[0] * (x[i + 1] - x[i]) + d[i] * (x[0] - x[i + 1]) + d[i + 1] * (x[i] - x[0]));
+        r.tilt += a_grad * (s * s + q) / 12.0;
+        r.slope += a_grad;
         r.area += a;
         r.d1 += a * s / 3.0;
         r.d2 += a * (s * s + q) / 12.0;
@@ -64,7 +75,10 @@ OverlapIntegrals integrate_depth(const ClipPolygon& poly, const Vec3& c, const V
         r.d2 = -r.d2;
         r.moment = -r.moment;
         r.first = -r.first;
+        r.tilt = -r.tilt;
+        r.slope = -r.slope;
     }
+    if (r.area > 0.0) r.slope /= r.area;
     return r;
 }
 

@@ -23,10 +23,13 @@ struct ClipPolygon {
     static constexpr int kMaxVertices = 24;
     int n = 0;                                  ///< vertex count
     std::array<Vec3, kMaxVertices> p;           ///< vertices, m
+    /// what made edge i (p[i] to p[i+1]): 0 the polygon as given, k + 1 the cut by constraint k
+    std::array<unsigned char, kMaxVertices> by{};
 };
 
-/// keep the part of `poly` where g ≥ 0 (Sutherland–Hodgman; g is affine, so cut points are exact)
-void clip(ClipPolygon& poly, const Affine& g);
+/// keep the part of `poly` where g ≥ 0 (Sutherland–Hodgman; g is affine, so cut points are exact);
+/// the edge the cut makes is labelled `label` (ClipPolygon::by: label + 1; −1: as given)
+void clip(ClipPolygon& poly, const Affine& g, int label = -1);
 
 /// the integrals of the penetration over a polygon projected on a target plane
 struct OverlapIntegrals {
@@ -35,12 +38,21 @@ struct OverlapIntegrals {
     double d2 = 0.0;               ///< ∫ d² dA, m⁴
     Vec3 moment = Vec3::Zero();    ///< ∫ x d dA over the projected points x, m⁴
     Vec3 first = Vec3::Zero();     ///< ∫ x dA over the projected points x, m³
+    Vec3 tilt = Vec3::Zero();      ///< ∫ d²·∇d dA, ∇d the depth's gradient along the plane, m⁴
+    Vec3 slope = Vec3::Zero();     ///< ∫ ∇d dA / area: the mean gradient of the depth along the plane
     /// the pressure centre ∫x(d + η)/∫(d + η) with η = 1e-12 m: ∫x·d/∫d wherever the depth is
     /// above rounding; for faces just touching (d ~ 1e-17 m of either sign, ∫d a rounding
     /// residue) the area's centroid instead of a quotient of residues anywhere in space, m
     Vec3 pressure_centre() const {
         constexpr double eta = 1e-12;
         return (moment + eta * first) / (d1 + eta * area);
+    }
+    /// where the normal force kn·∫d dA along n acts so that it is the gradient of ½kn∫d² dA: the
+    /// pressure centre moved by −½∫d²∇d dA / ∫d dA along the plane (a face tilted to the target
+    /// plane: its projected area changes as it turns, a couple ½kn·n × ∫d²∇d dA; docs/dem.md), m
+    Vec3 action_point() const {
+        constexpr double eta = 1e-12;
+        return (moment + eta * first - 0.5 * tilt) / (d1 + eta * area);
     }
 };
 

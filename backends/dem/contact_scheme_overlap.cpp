@@ -6,6 +6,7 @@
 
 #include "contact.hpp"
 #include "contact_overlap.hpp"
+#include "contact_overlap_edge.hpp"
 #include "contact_reach.hpp"
 
 namespace cairn::dem {
@@ -104,9 +105,15 @@ void ContactSet::evaluate_overlap(std::vector<Block>& blocks, double dt, long be
                     for (int i = 0; i < 4; ++i) flat[i] = tq[i] - nt.dot(tq[i] - ct) * nt;
                     int nc = side_count;
                     cons[nc++] = Affine{-nt, nt.dot(ct)};   // behind the face: d ≥ 0
-                    for (int i = 0; i < 4; ++i) {           // over the face: inside each edge
+                    // over the face: inside each edge; a face that is the whole side within the
+                    // flush tolerance, as the other sides' planes (a face flush with the edge of
+                    // an equal one is bounded by its own edge, which moves with it, and not by the
+                    // target's, whose edge force would come and go as rounding moves one past
+                    // the other: the arches' joints)
+                    const double edge_tol = whole ? g.flush_tol : 0.0;
+                    for (int i = 0; i < 4; ++i) {
                         const Vec3 a = nt.cross(flat[(i + 1) % 4] - flat[i]).normalized();
-                        cons[nc++] = Affine{a, -a.dot(flat[i])};
+                        cons[nc++] = Affine{a, -a.dot(flat[i]) + edge_tol};
                     }
                     if (missed_by(cons.data() + side_count, cons.data() + nc)) continue;
                     for (int v = 0; v < n; ++v)
@@ -144,7 +151,7 @@ void ContactSet::evaluate_overlap(std::vector<Block>& blocks, double dt, long be
                                     poly.n = 4;
                                     for (int i = 0; i < 4; ++i) poly.p[size_t(i)] = grid[size_t(corner[size_t(i)])];
                                 }
-                                for (int q = 0; q < nc && poly.n >= 3; ++q) clip(poly, cons[size_t(q)]);
+                                for (int q = 0; q < nc && poly.n >= 3; ++q) clip(poly, cons[size_t(q)], q);
                                 if (poly.n < 3) {
                                     poly.n = 0;
                                     continue;
@@ -198,11 +205,13 @@ void ContactSet::evaluate_overlap(std::vector<Block>& blocks, double dt, long be
                             // of the motion energy at dt_safety 0.1 / 0.05 / 0.025; 0.021 % now)
                             const Vec3 xc = in.first / in.area;
                             const NodeWeights wh = node_weights(hb, c.hit_face, xc), wt = node_weights(tb, tf, xc);
-                            // the normal force acts at the pressure centre xs on the target plane, on
-                            // both blocks (a collinear pair); on a deformable block by the weights
-                            // that make it the gradient of ½kn∫d² dA (rigid: any weights reproduce
-                            // the force and its moment)
-                            const Vec3 xs = in.pressure_centre();
+                            // the normal force acts at the pressure centre xs on the target plane,
+                            // moved by the tilt couple on a rigid hitting face
+                            // (OverlapIntegrals::action_point; see the edge forces below), on both
+                            // blocks (a collinear pair); on a deformable block by the weights that
+                            // make it the gradient of ½kn∫d² dA (rigid: any weights reproduce the
+                            // force and its moment)
+                            const Vec3 xs = split ? in.pressure_centre() : in.action_point();
                             NodeWeights wh_n, wt_n;
                             if (!split) wh_n = node_weights(hb, c.hit_face, xs);
                             else {
@@ -272,12 +281,15 @@ void ContactSet::evaluate_overlap(std::vector<Block>& blocks, double dt, long be
                                 Vec3 u_t = anchor->u - anchor->u.dot(nt) * nt + vt_rel * dt;
                                 // the spring's stiffness ks·A follows the contact area; the offset
                                 // is scaled so that a change of area neither makes nor takes spring
-                                // energy (½ks·A·u² kept: u scaled by √(A_old/A))
+                                // energy (½ks·A·u² kept: u scaled by √(A_old/A)), and its growth over
+                                // the step by the step's mean √A (s = √A·u grows by √A·v·dt: with
+                                // √A_old alone the step's work missed the spring's energy by
+                                // ½ks·(√A − √A_old)·√A·u·v·dt, first order where areas change fast)
                                 Vec3 u_old = anchor->u - anchor->u.dot(nt) * nt;
                                 if (!lay && anchor->area > 0.0) {
                                     const double scale = std::sqrt(anchor->area / in.area);
-                                    u_t *= scale;
                                     u_old *= scale;
+                                    u_t = u_old + (0.5 * (1.0 + scale)) * vt_rel * dt;
                                 }
                                 anchor->area = in.area;
                                 const double ks_a = law_.ks * in.area;
@@ -319,6 +331,35 @@ void ContactSet::evaluate_overlap(std::vector<Block>& blocks, double dt, long be
                                 wt_n.add(tb, -fnv);
                                 wh.add(hb, force - fnv);
                                 wt.add(tb, fnv - force);
+                            }
+                            // where the polygon ends on a constraint fixed to the target (a target
+                            // face's edge, another side's plane) with depth, U changes as the
+                            // face moves over it: the boundary term of the gradient, on both blocks
+                            // at the edge's hitting points (the cell's own edges move with it, and
+                            // d = 0 on the depth cut). Rigid hitting faces only, as the tilt couple:
+                            // on a deformable block's triangles the two made structures/arch_thin
+                            // (corrected or consistent mass) blow up as it collapses (an element
+                            // turned inside out at 0.53 s), and its balance closes without them
+                            for (int pk = 0; pk < parts && !split; ++pk) {
+                                const ClipPolygon& poly = polys[size_t(pk)];
+                                const Vec3& slope = in.slope;
+                                for (int i = 0; i < poly.n; ++i) {
+                                    const int k = int(poly.by[size_t(i)]) - 1;
+                                    if (k < 0 || k == side_count) continue;
+                                    const EdgeForce e = edge_force(poly, i, ct, nt, cons[size_t(k)], slope, law_.kn);
+                                    if (e.force.isZero(0.0)) continue;
+                                    const NodeWeights eh = node_weights(hb, c.hit_face, e.point), et = node_weights(tb, tf, e.point);
+                                    if (keep_forces) {
+                                        c.sub_forces.push_back({eh, et, e.force, nt, eh, et});
+                                    } else {
+                                        // as ContactSet::apply spreads a kept force
+                                        const Vec3 fnv = e.force.dot(nt) * nt;
+                                        eh.add(hb, fnv);
+                                        et.add(tb, -fnv);
+                                        eh.add(hb, e.force - fnv);
+                                        et.add(tb, fnv - e.force);
+                                    }
+                                }
                             }
                             ++tot.active;
                         }

@@ -68,7 +68,33 @@ TEST_CASE("overlap clipping and its depth integrals match a fine midpoint quadra
         CHECK(in.d1 == Approx(d1).epsilon(5e-3));
         CHECK(in.d2 == Approx(d2).epsilon(5e-3));
         CHECK((in.moment - mom).norm() <= 5e-3 * mom.norm() + 1e-9);
+        // a planar cell: the depth's gradient is −(gx, gy) everywhere, so ∫d²∇d dA = ∫d² dA·∇d
+        // (rounding of the fan's sums: 1e-12)
+        const Vec3 grad(-gx, -gy, 0.0);
+        CHECK((in.slope - grad).norm() < 1e-12);
+        CHECK((in.tilt - in.d2 * grad).norm() < 1e-12 * in.d2);
     }
+}
+
+TEST_CASE("clipping labels each edge by the constraint that cut it", "[dem][contact]") {
+    // the unit square cut by x ≤ 0.6 (label 3) then y ≤ 0.7 (label 5): the edges along those
+    // lines carry the labels (stored + 1), the square's own edges 0
+    ClipPolygon poly;
+    poly.n = 4;
+    poly.p = {Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(1, 1, 0), Vec3(0, 1, 0)};
+    clip(poly, Affine{Vec3(-1, 0, 0), 0.6}, 3);
+    clip(poly, Affine{Vec3(0, -1, 0), 0.7}, 5);
+    REQUIRE(poly.n == 4);
+    int on_x = 0, on_y = 0, own = 0;
+    for (int i = 0; i < poly.n; ++i) {
+        const Vec3 a = poly.p[size_t(i)], b = poly.p[size_t((i + 1) % poly.n)];
+        if (poly.by[size_t(i)] == 4) on_x += std::abs(a.x() - 0.6) < 1e-15 && std::abs(b.x() - 0.6) < 1e-15;
+        else if (poly.by[size_t(i)] == 6) on_y += std::abs(a.y() - 0.7) < 1e-15 && std::abs(b.y() - 0.7) < 1e-15;
+        else own += poly.by[size_t(i)] == 0;
+    }
+    CHECK(on_x == 1);
+    CHECK(on_y == 1);
+    CHECK(own == 2);
 }
 
 TEST_CASE("a plane of uniform depth over a whole face integrates to area x depth exactly", "[dem][contact]") {

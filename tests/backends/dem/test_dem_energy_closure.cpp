@@ -49,16 +49,20 @@ TEST_CASE("rigid blocks close the energy balance of the paper's scenes at the de
     check_closes({"paper/friction_slide", "paper/friction_stick", "paper/friction_stick_base", "paper/rocking_damped_02",
                   "paper/rocking_damped_04", "paper/rocking_housner", "paper/rocking_slender"},
                  {"paper", "overlap"}, "rigid");
-    // the overlap scheme's rocking (overturns, error at the corner impact) and rolling (edge
-    // impact) miss it: docs/dem.md, Energy
-    check_closes({"paper/rocking", "paper/rolling"}, {"paper"}, "rigid");
+}
+
+TEST_CASE("rigid blocks close the energy balance of rocking that overturns and of rolling", "[dem][energy]") {
+    // overlap scheme: the rocking block overturns and lands across the base's edge, the rolling
+    // cube's edge impact sweeps its contact areas fast (1.43 % and 0.110 % before the edge forces
+    // and the shear offset's mean √A; docs/dem.md, Energy)
+    check_closes({"paper/rocking", "paper/rolling"}, {"paper", "overlap"}, "rigid");
+    check_closes({"paper/rocking_winkler"}, {"overlap"}, "rigid");   // ships on the overlap scheme
 }
 
 TEST_CASE("rigid blocks close the energy balance of the hard impacts at the default step", "[dem][energy]") {
     // the step's kinetic energy leaves out the half kick's (dt²/8)·F²/m, which ½mv² carried at the
     // impact's peak: 0.10-0.24 % of the motion energy at the default dt_safety 0.1 before
     check_closes({"paper/impact", "paper/impact_damped", "paper/stability"}, {"paper", "overlap"}, "rigid");
-    check_closes({"paper/rolling"}, {"overlap"}, "rigid", "0.05");
 }
 
 TEST_CASE("deformable blocks close the energy balance of impacts, sliding and rolling, paper scheme", "[dem][energy]") {
