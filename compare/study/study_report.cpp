@@ -164,8 +164,9 @@ void add_inertia_section(report::Document& doc, const std::vector<StudyPoint>& p
     doc.heading(3, "Where the corrected scheme stops");
     doc.paragraph("`corrected` keeps the lumped (diagonal) masses for deformation and gives the rigid rotation the exact "
          "inertia tensor (a closed-form rank-3 correction, O(nodes) per step; docs/dem.md). Its limits: "
-         "(1) it adds no gyroscopic term, so a block that is not inertially symmetric tumbling in 3-D does not "
-         "conserve energy exactly (planar rocking is unaffected: the rotation stays about one principal axis); "
+         "(1) its gyroscopic term (Euler's equation with the exact inertia) takes the half-step velocity, a "
+         "first-order lag: a 1.0 x 0.6 x 0.4 m box tumbling through a 134 deg flip follows Euler's equations "
+         "within 7e-5 rad (planar rocking is unaffected: the rotation stays about one principal axis); "
          "(2) a block with fixed nodes has no free rigid rotation and falls back to plain lumped masses; "
          "(3) the target inertia is rotated with the nodes' best-fit rotation, exact for rigid motion and an "
          "approximation once the block deforms a lot; (4) its stable step is the lumped mass's, the deformation "
