@@ -110,14 +110,7 @@ ContactTotals ContactSet::apply(std::vector<Block>& blocks, double dt) {
             spread(hb, c.hit_face, hb.hits[c.hit_face][p.point].xi, p.force);
             spread(tb, p.target_face, p.target_xi, -p.force);
         }
-        for (const auto& p : c.sub_forces) {
-            // the normal part at the pressure centre, the shear part at the area's centroid
-            const Vec3 fn = p.force.dot(p.normal) * p.normal;
-            p.hit_n.add(hb, fn);
-            p.target_n.add(tb, -fn);
-            p.hit.add(hb, p.force - fn);
-            p.target.add(tb, fn - p.force);
-        }
+        for (const auto& p : c.sub_forces) p.spread(hb, tb);
         tot.stored += c.totals.stored;
         tot.dissipated += c.totals.dissipated;
         tot.active += c.totals.active;

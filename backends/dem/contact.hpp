@@ -66,6 +66,15 @@ struct SubForce {
     Vec3 force = Vec3::Zero();  ///< on the hitting block (the target takes −force), N
     Vec3 normal = Vec3::UnitZ();///< the target face's outward unit normal
     NodeWeights hit_n, target_n;///< where its normal part acts (the pressure centre; docs/dem.md "scheme = overlap")
+    /// add it to the node forces of the hitting block `hb` and the target `tb`: the normal part at
+    /// hit_n/target_n, the rest at hit/target (one order of sums: the same bits wherever it is spread)
+    void spread(Block& hb, Block& tb) const {
+        const Vec3 fn = force.dot(normal) * normal;
+        hit_n.add(hb, fn);
+        target_n.add(tb, -fn);
+        hit.add(hb, force - fn);
+        target.add(tb, fn - force);
+    }
 };
 
 /// Energies and counts of one contact evaluation.

@@ -322,16 +322,9 @@ void ContactSet::evaluate_overlap(std::vector<Block>& blocks, double dt, long be
                             }
                             anchor->fds = fds;
                             const Vec3 force = fn * nt + fs;
-                            if (keep_forces) {
-                                c.sub_forces.push_back({wh, wt, force, nt, wh_n, wt_n});
-                            } else {
-                                // as ContactSet::apply spreads a kept force (same bits on any thread count)
-                                const Vec3 fnv = force.dot(nt) * nt;
-                                wh_n.add(hb, fnv);
-                                wt_n.add(tb, -fnv);
-                                wh.add(hb, force - fnv);
-                                wt.add(tb, fnv - force);
-                            }
+                            const SubForce sub{wh, wt, force, nt, wh_n, wt_n};
+                            if (keep_forces) c.sub_forces.push_back(sub);
+                            else sub.spread(hb, tb);
                             // where the polygon ends on a constraint fixed to the target (a target
                             // face's edge, another side's plane) with depth, U changes as the
                             // face moves over it: the boundary term of the gradient, on both blocks
@@ -340,26 +333,16 @@ void ContactSet::evaluate_overlap(std::vector<Block>& blocks, double dt, long be
                             // on a deformable block's triangles the two made structures/arch_thin
                             // (corrected or consistent mass) blow up as it collapses (an element
                             // turned inside out at 0.53 s), and its balance closes without them
-                            for (int pk = 0; pk < parts && !split; ++pk) {
-                                const ClipPolygon& poly = polys[size_t(pk)];
-                                const Vec3& slope = in.slope;
-                                for (int i = 0; i < poly.n; ++i) {
-                                    const int k = int(poly.by[size_t(i)]) - 1;
-                                    if (k < 0 || k == side_count) continue;
-                                    const EdgeForce e = edge_force(poly, i, ct, nt, cons[size_t(k)], slope, law_.kn);
-                                    if (e.force.isZero(0.0)) continue;
-                                    const NodeWeights eh = node_weights(hb, c.hit_face, e.point), et = node_weights(tb, tf, e.point);
-                                    if (keep_forces) {
-                                        c.sub_forces.push_back({eh, et, e.force, nt, eh, et});
-                                    } else {
-                                        // as ContactSet::apply spreads a kept force
-                                        const Vec3 fnv = e.force.dot(nt) * nt;
-                                        eh.add(hb, fnv);
-                                        et.add(tb, -fnv);
-                                        eh.add(hb, e.force - fnv);
-                                        et.add(tb, fnv - e.force);
-                                    }
-                                }
+                            const ClipPolygon& cell_poly = polys[0];   // a rigid face's cell, clipped whole
+                            for (int i = 0; i < (split ? 0 : cell_poly.n); ++i) {
+                                const int k = int(cell_poly.by[size_t(i)]) - 1;
+                                if (k < 0 || k == side_count) continue;
+                                const EdgeForce e = edge_force(cell_poly, i, ct, nt, cons[size_t(k)], in.slope, law_.kn);
+                                if (e.force.isZero(0.0)) continue;
+                                const NodeWeights eh = node_weights(hb, c.hit_face, e.point), et = node_weights(tb, tf, e.point);
+                                const SubForce edge{eh, et, e.force, nt, eh, et};
+                                if (keep_forces) c.sub_forces.push_back(edge);
+                                else edge.spread(hb, tb);
                             }
                             ++tot.active;
                         }
