@@ -49,6 +49,7 @@ public:
                             message_number(contact_critical_) + " s, the elements " + message_number(element_critical_) +
                             " s); give run.dt, or a stiffness whose critical step is not 0");
         }
+        if (scene_.run.settle) settle_ = world_->settle(dt_);
         world_->start(dt_);
     }
 
@@ -128,6 +129,14 @@ public:
             n.push_back("warning: the time step exceeds the critical step estimate; the run may blow up");
         n.push_back("broad-phase margin (m): " + num(margin_));
         n.push_back("contact refresh interval (steps): " + std::to_string(scene_.run.contact_interval));
+        if (!scene_.run.settle)
+            n.push_back("start: as given (run.settle = false, the default)");
+        else if (settle_.settled)
+            n.push_back("start: settled under gravity in " + std::to_string(settle_.steps) + " steps (largest move " +
+                        num(settle_.largest_move) + " m, block " + settle_.block + "; unbalanced force " +
+                        num(settle_.residual) + " of a block's weight)");
+        else
+            n.push_back("start: as given, not settled (" + settle_.why + ")");
         if (world_ && world_->early_refreshes() > 0)
             n.push_back("warning: contact pairs were refreshed early " + std::to_string(world_->early_refreshes()) +
                         " times because a block moved more than half the margin within the interval; "
@@ -140,6 +149,7 @@ public:
 private:
     Scene scene_;
     std::unique_ptr<dem::World> world_;
+    dem::SettleReport settle_;
     double dt_ = 0.0, critical_ = 0.0, contact_critical_ = 0.0, element_critical_ = 0.0, margin_ = 0.0;
     std::string failure_;
 };

@@ -208,7 +208,7 @@ void World::compute_forces() {
     energy_.contact = ct.stored;
     energy_.dissipated += ct.dissipated;
     active_ = ct.active;
-    for (size_t i = 0; i < loads_.size(); ++i) {
+    for (size_t i = 0; i < loads_.size() && !settling_; ++i) {
         const auto& l = scene_.loads[i];
         Block& b = blocks_[loads_[i].block];
         // a body load (ground motion) acts at the centre of mass, spread like the mass
@@ -231,7 +231,7 @@ void World::compute_forces() {
     for (long i = 0; i < count; ++i) {
         Block& b = blocks_[size_t(i)];
         if (b.fixed || b.deformable) continue;
-        force_[size_t(i)] = b.body.mass * scene_.gravity;
+        force_[size_t(i)] = b.body.mass * gravity_scale_ * scene_.gravity;
         torque_[size_t(i)].setZero();
         for (size_t n = 0; n < b.x.size(); ++n) {
             force_[size_t(i)] += b.f[n];
@@ -243,7 +243,7 @@ void World::compute_forces() {
         if (b.fixed || !b.deformable) continue;
         {
             const auto& m = b.deformable->lumped_mass();
-            for (size_t n = 0; n < b.x.size(); ++n) b.f[n] += m[n] * scene_.gravity;
+            for (size_t n = 0; n < b.x.size(); ++n) b.f[n] += m[n] * gravity_scale_ * scene_.gravity;
             energy_.strain += b.deformable->add_internal_forces(b.x, b.v, b.f);
             if (b.deformable->inverted_element() >= 0 && inversion_.empty()) inversion_ = inversion_message(i);
             energy_.dissipated += b.deformable->damping_power() * dt_;

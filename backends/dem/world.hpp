@@ -21,12 +21,30 @@ struct EnergyAccounts {
     double external = 0.0;      ///< work of the loads so far
 };
 
+/// What the settling before t = 0 did (World::settle).
+struct SettleReport {
+    bool settled = false;     ///< the blocks came to rest and start from there; false: started as given
+    long steps = 0;           ///< steps taken while settling
+    double residual = 0.0;    ///< the largest unbalanced force at the end, a fraction of the block's weight
+    double largest_move = 0.0;///< the largest move of a block's centre while settling, m
+    std::string block;        ///< the block that moved most
+    std::string why;          ///< settled = false: why (a block moved as a mechanism, or no rest within the cap)
+};
+
 class World {
 public:
     /// build the blocks of a validated scene, with a broad-phase margin (m)
     World(const Scene& scene, double margin);
     /// set the time step (s) and evaluate the forces at t = 0; call once before step()
     void start(double dt);
+    /// bring the free blocks to rest under gravity before t = 0 at the time step dt (s): from rest,
+    /// gravity ramps from 0 to g and the blocks relax by kinetic damping (all stopped past each
+    /// peak of the kinetic energy), the loads off, for a fixed count of steps; kept if the largest
+    /// unbalanced force is then below kSettleResidual of a block's weight and no block moved by
+    /// kSettleMove of its shortest edge or turned by kSettleTurn; otherwise the state as given is
+    /// restored bit for bit. Either way the blocks then carry the scene's initial velocities, the
+    /// energy accounts start at zero and t = 0. Call before start() (docs/dem.md, "Settled start")
+    SettleReport settle(double dt);
     /// advance one step; false if the run can no longer be trusted (see failure())
     bool step();
     /// why the last step failed: an element of a deformable block turned inside out (det F <= 0
@@ -80,7 +98,16 @@ private:
     bool state_finite() const;
     std::string inversion_message(size_t block) const;
 
+    /// settle(): every free block at rest (kinetic damping)
+    void stop_blocks();
+    /// largest unbalanced force (rigid: also torque over r_max) of a free block, over its weight
+    double unbalanced() const;
+    /// ½vᵀMv of the free blocks, J
+    double motion_energy() const;
+
     const Scene& scene_;
+    bool settling_ = false;      // settle(): gravity scaled, loads off
+    double gravity_scale_ = 1.0; // settle(): the ramp of gravity
     double margin_ = 0.0;   // the scene's broad-phase margin, m
     double dt_ = 0.0;
     double t_ = 0.0;

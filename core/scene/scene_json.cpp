@@ -83,7 +83,8 @@ nlohmann::json scene_to_json(const Scene& scene) {
                 {"element_dt_safety", r.element_dt_safety},
                 {"output_interval", r.output_interval},
                 {"contact_interval", r.contact_interval},
-                {"contact_margin", r.contact_margin ? json(*r.contact_margin) : json("auto")}};
+                {"contact_margin", r.contact_margin ? json(*r.contact_margin) : json("auto")},
+                {"settle", r.settle}};
     json reference = nullptr;
     if (scene.reference) {
         reference = {{"kind", scene.reference->kind}, {"values", scene.reference->values}};

@@ -47,7 +47,7 @@ double non_negative(const Item& it) {
 
 RunControl read_run(const TableReader& root) {
     TableReader r = sub_table(root, "run", {"duration", "dt", "dt_safety", "element_dt_safety",
-                                            "output_interval", "contact_interval", "contact_margin"});
+                                            "output_interval", "contact_interval", "contact_margin", "settle"});
     RunControl rc;
     rc.duration = positive(r.require("duration"));
     if (Item it = r.get("dt")) {
@@ -68,6 +68,7 @@ RunControl read_run(const TableReader& root) {
         it.check(rc.contact_interval >= 1, "must be an integer >= 1");
     }
     if (Item it = r.get("contact_margin")) rc.contact_margin = positive(it);
+    if (Item it = r.get("settle")) rc.settle = it.boolean();
     return rc;
 }
 

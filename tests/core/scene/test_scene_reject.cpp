@@ -66,6 +66,8 @@ TEST_CASE("a value of the wrong type is rejected", "[scene][reject]") {
     // a float where an integer is expected
     CHECK_THAT(error_of(with_line(3, "duration = 0.5\ncontact_interval = 2.0")),
                Contains("bad.toml:4: run.contact_interval = 2.0: expected an integer, not a float"));
+    CHECK_THAT(error_of(with_line(3, "duration = 0.5\nsettle = \"yes\"")),
+               Contains("bad.toml:4: run.settle = \"yes\": expected true or false"));
     CHECK_THAT(error_of(with_line(12, "size = [1, 1]")),
                Contains("bad.toml:12: blocks.A.size = [1, 1]: expected an array of 3 numbers"));
 }

@@ -1,0 +1,159 @@
+// The settled start: the blocks brought to rest under gravity before t = 0 (docs/dem.md).
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+#include "world.hpp"
+
+namespace cairn::dem {
+
+namespace {
+
+// gravity ramps over this many bounce periods of the softest block on its springs, then the
+// blocks relax for this many more; a fixed count of steps, so that the settled state does not
+// depend on where a threshold was crossed (block order and names change only round-off)
+constexpr double kRampPeriods = 5.0;
+constexpr double kRestPeriods = 30.0;
+// and never more steps than this, nor than the run's own steps if those are more
+constexpr long kSettleStepCap = 20000;
+// at rest: no block's unbalanced force (or torque over its r_max) above this fraction of its weight
+constexpr double kSettleResidual = 1e-3;
+// not at rest as placed: a block's centre moved by this fraction of its shortest edge, or it
+// turned by this angle (rad), while it settled (a mechanism: it rocks, slides or falls)
+constexpr double kSettleMove = 0.02;
+constexpr double kSettleTurn = 0.02;
+
+double turn(const Quat& a, const Quat& b) { return 2.0 * std::acos(std::min(1.0, std::abs(a.dot(b)))); }
+
+}  // namespace
+
+void World::stop_blocks() {
+    for (auto& b : blocks_) {
+        if (b.fixed) continue;
+        b.body.v.setZero();
+        b.body.L.setZero();
+        for (auto& v : b.v) v.setZero();
+    }
+}
+
+double World::motion_energy() const {
+    double e = 0.0;
+    for (const auto& b : blocks_) {
+        if (b.fixed) continue;
+        if (!b.deformable) e += b.body.kinetic_energy();
+        else e += b.deformable->kinetic_energy(b.x, b.v);
+    }
+    return e;
+}
+
+double World::unbalanced() const {
+    const double g = scene_.gravity.norm();
+    double worst = 0.0;
+    for (size_t i = 0; i < blocks_.size(); ++i) {
+        const Block& b = blocks_[i];
+        if (b.fixed) continue;
+        if (!b.deformable) {
+            const double w = b.body.mass * g;
+            worst = std::max({worst, force_[i].norm() / w, torque_[i].norm() / (w * b.r_max)});
+            continue;
+        }
+        const auto& m = b.deformable->lumped_mass();
+        const auto& fixed = b.deformable->fixed_nodes();
+        for (size_t n = 0; n < b.f.size(); ++n)
+            if (!fixed[n]) worst = std::max(worst, b.f[n].norm() / (m[n] * g));
+    }
+    return worst;
+}
+
+SettleReport World::settle(double dt) {
+    SettleReport rep;
+    dt_ = dt;
+    const double g = scene_.gravity.norm();
+    if (!(g > 0.0)) {
+        rep.why = "no gravity: nothing to settle";
+        return rep;
+    }
+    // the slowest bounce of a free block on its softest side's springs sets the time scales
+    double period = 0.0;
+    for (const auto& b : blocks_) {
+        if (b.fixed) continue;
+        const double area = *std::min_element(b.side_area.begin(), b.side_area.end());
+        period = std::max(period, 2.0 * M_PI * std::sqrt(b.body.mass / (scene_.contact.kn * area)));
+    }
+    const long run_steps = long(std::min(1e9, std::ceil(scene_.run.duration / dt)));
+    const long cap = std::max(kSettleStepCap, run_steps);
+    const long ramp = std::clamp(long(std::ceil(kRampPeriods * period / dt)), 1L, cap);
+    const long last = std::min(cap, ramp + long(std::ceil(kRestPeriods * period / dt)));
+
+    const std::vector<Block> given = blocks_;
+    const ContactSet given_contacts = contacts_;
+    stop_blocks();
+    settling_ = true;
+    gravity_scale_ = 0.0;
+    compute_forces();
+    double kinetic_last = 0.0;
+    for (long k = 1; k <= last && rep.why.empty(); ++k) {
+        gravity_scale_ = std::min(1.0, double(k) / double(ramp));
+        rep.steps = k;
+        if (!step()) {
+            rep.why = "the settling failed: " + failure_;
+            break;
+        }
+        // kinetic damping: past a peak of the kinetic energy, every block stops
+        const double kinetic_now = motion_energy();
+        if (kinetic_now < kinetic_last) {
+            stop_blocks();
+            kinetic_last = 0.0;
+        } else {
+            kinetic_last = kinetic_now;
+        }
+        for (size_t i = 0; i < blocks_.size(); ++i) {
+            const Block& b = blocks_[i];
+            if (b.fixed) continue;
+            const double move = (b.body.x - given[i].body.x).norm();
+            if (move > rep.largest_move) rep.largest_move = move, rep.block = b.name;
+            const double angle = turn(b.body.q, given[i].body.q);
+            if (move > kSettleMove * b.min_edge || angle > kSettleTurn) {
+                rep.why = "block " + b.name + " moved " + std::to_string(move) + " m and turned " +
+                          std::to_string(angle) + " rad under gravity: not at rest as placed";
+                break;
+            }
+        }
+    }
+    rep.residual = unbalanced();
+    if (rep.why.empty() && !(rep.residual < kSettleResidual))
+        rep.why = "not at rest after " + std::to_string(rep.steps) + " steps (unbalanced force " +
+                  std::to_string(rep.residual) + " of a block's weight)";
+    settling_ = false;
+    gravity_scale_ = 1.0;
+    rep.settled = rep.why.empty();
+    if (!rep.settled) {
+        blocks_ = given;
+        contacts_ = given_contacts;
+    } else {
+        // the scene's initial velocities on the settled blocks
+        for (size_t i = 0; i < blocks_.size(); ++i) {
+            Block& b = blocks_[i];
+            if (b.fixed) continue;
+            b.body.v = given[i].body.v;
+            b.body.set_omega(given[i].body.omega());
+            b.v = given[i].v;
+        }
+        contacts_.set_margin(margin_);
+        contacts_.refresh(blocks_);
+    }
+    energy_ = EnergyAccounts{};
+    t_ = 0.0;
+    steps_since_refresh_ = 0;
+    early_refreshes_ = 0;
+    element_updates_ = 0;
+    failure_.clear();
+    inversion_.clear();
+    for (size_t i = 0; i < loads_.size(); ++i) {
+        const Block& b = blocks_[loads_[i].block];
+        load_point_[i] = scene_.loads[i].body ? b.body.x : world_position(b, loads_[i]);
+    }
+    return rep;
+}
+
+}  // namespace cairn::dem
