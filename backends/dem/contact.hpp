@@ -142,6 +142,9 @@ public:
     /// overlap scheme: leave out at each refresh the faces that cannot reach their target before
     /// the next (on by default; off: every face whose box meets the target's, for comparison)
     void prune(bool on) { prune_ = on; }
+    /// false: no shear spring slips, whatever its normal force (the settling before t = 0
+    /// finds the springs' elastic static state, which does not depend on the path); default true
+    void allow_slip(bool on) { slip_ = on; }
 
 private:
     /// candidates [begin, end): forces (kept in the candidate, or spread at once), anchors, totals
@@ -155,6 +158,7 @@ private:
     double margin_ = 0.0;
     bool keep_forces_ = false;
     bool prune_ = true;
+    bool slip_ = true;
     std::vector<Candidate> candidates_;
     std::vector<EventForce> events_;
     std::vector<SideFrames> frames_;   // every block's side frames of this step

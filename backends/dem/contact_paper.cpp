@@ -2,6 +2,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <limits>
 
 #include "contact.hpp"
 
@@ -162,7 +163,7 @@ void ContactSet::evaluate_paper(std::vector<Block>& blocks, double dt, long begi
                 Vec3 vt_rel = vrel - vrel.dot(n) * n;
                 const double ks_a = law_.ks * a;
                 Vec3 f_el = -ks_a * u;
-                const double cap = law_.friction * fn;
+                const double cap = slip_ ? law_.friction * fn : std::numeric_limits<double>::max();
                 if (f_el.norm() > cap) {
                     // slip: the spring is capped at μ·Fn and its anchor follows; no shear dashpot
                     fs = cap * f_el / f_el.norm();

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <limits>
 
 #include "contact.hpp"
 #include "contact_overlap.hpp"
@@ -294,7 +295,7 @@ void ContactSet::evaluate_overlap(std::vector<Block>& blocks, double dt, long be
                                 anchor->area = in.area;
                                 const double ks_a = law_.ks * in.area;
                                 const Vec3 f_el = -ks_a * u_t;
-                                const double cap = law_.friction * fn;
+                                const double cap = slip_ ? law_.friction * fn : std::numeric_limits<double>::max();
                                 if (f_el.norm() > cap) {
                                     // slip: the spring is capped at μ·Fn, the offset shrinks to match
                                     fs = cap * f_el / f_el.norm();

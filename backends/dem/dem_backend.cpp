@@ -130,7 +130,7 @@ public:
         n.push_back("broad-phase margin (m): " + num(margin_));
         n.push_back("contact refresh interval (steps): " + std::to_string(scene_.run.contact_interval));
         if (!scene_.run.settle)
-            n.push_back("start: as given (run.settle = false, the default)");
+            n.push_back("start: as given (run.settle = false)");
         else if (settle_.settled)
             n.push_back("start: settled under gravity in " + std::to_string(settle_.steps) + " steps (largest move " +
                         num(settle_.largest_move) + " m, block " + settle_.block + "; unbalanced force " +

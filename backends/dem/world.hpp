@@ -39,8 +39,9 @@ public:
     void start(double dt);
     /// bring the free blocks to rest under gravity before t = 0 at the time step dt (s): from rest,
     /// gravity ramps from 0 to g and the blocks relax by kinetic damping (all stopped past each
-    /// peak of the kinetic energy), the loads off, for a fixed count of steps; kept if the largest
-    /// unbalanced force is then below kSettleResidual of a block's weight and no block moved by
+    /// peak of the kinetic energy), the loads off, no shear spring slipping, in rounds of a fixed
+    /// count of steps; kept once the largest unbalanced force at the end of a round is below
+    /// kSettleResidual of a block's weight (within a cap of steps) and no block moved by
     /// kSettleMove of its shortest edge or turned by kSettleTurn; otherwise the state as given is
     /// restored bit for bit. Either way the blocks then carry the scene's initial velocities, the
     /// energy accounts start at zero and t = 0. Call before start() (docs/dem.md, "Settled start")

@@ -10,8 +10,9 @@ namespace cairn::dem {
 namespace {
 
 // gravity ramps over this many bounce periods of the softest block on its springs, then the
-// blocks relax for this many more; a fixed count of steps, so that the settled state does not
-// depend on where a threshold was crossed (block order and names change only round-off)
+// blocks relax in rounds of this many more, the unbalanced force judged only at the end of a
+// round: where the settling stops is a fixed count of steps, not where a threshold was crossed
+// (block order and names change only round-off)
 constexpr double kRampPeriods = 5.0;
 constexpr double kRestPeriods = 30.0;
 // and never more steps than this, nor than the run's own steps if those are more
@@ -83,16 +84,18 @@ SettleReport World::settle(double dt) {
     const long run_steps = long(std::min(1e9, std::ceil(scene_.run.duration / dt)));
     const long cap = std::max(kSettleStepCap, run_steps);
     const long ramp = std::clamp(long(std::ceil(kRampPeriods * period / dt)), 1L, cap);
-    const long last = std::min(cap, ramp + long(std::ceil(kRestPeriods * period / dt)));
+    const long round = std::max(1L, long(std::ceil(kRestPeriods * period / dt)));
 
     const std::vector<Block> given = blocks_;
     const ContactSet given_contacts = contacts_;
     stop_blocks();
+    contacts_.allow_slip(false);
     settling_ = true;
     gravity_scale_ = 0.0;
     compute_forces();
     double kinetic_last = 0.0;
-    for (long k = 1; k <= last && rep.why.empty(); ++k) {
+    bool rest = false;
+    for (long k = 1; k <= cap && rep.why.empty() && !rest; ++k) {
         gravity_scale_ = std::min(1.0, double(k) / double(ramp));
         rep.steps = k;
         if (!step()) {
@@ -119,6 +122,7 @@ SettleReport World::settle(double dt) {
                 break;
             }
         }
+        if (k >= ramp && (k - ramp) % round == round - 1) rest = unbalanced() < kSettleResidual;
     }
     rep.residual = unbalanced();
     if (rep.why.empty() && !(rep.residual < kSettleResidual))
@@ -126,6 +130,7 @@ SettleReport World::settle(double dt) {
                   std::to_string(rep.residual) + " of a block's weight)";
     settling_ = false;
     gravity_scale_ = 1.0;
+    contacts_.allow_slip(true);
     rep.settled = rep.why.empty();
     if (!rep.settled) {
         blocks_ = given;

@@ -60,7 +60,7 @@ std::string scene_toml(const Scene& scene, const std::string& comment) {
     out << "\n[run]\nduration = " << num(r.duration) << "   # s\n";
     if (r.dt) out << "dt = " << num(*r.dt) << "   # s\n";
     out << "output_interval = " << num(r.output_interval) << "   # s\n";
-    if (r.settle) out << "settle = true\n";
+    if (!r.settle) out << "settle = false   # start as placed, not settled under gravity\n";
     for (const Material& m : scene.materials)
         out << "\n[materials." << m.name << "]\ndensity = " << num(m.density) << "   # kg/m³\nyoung = "
             << num(m.young) << "   # Pa\npoisson = " << num(m.poisson) << "\n";

@@ -21,7 +21,7 @@ TEST_CASE("the base scene takes every default", "[scene]") {
     CHECK(s.run.output_interval == 1e-3);
     CHECK(s.run.contact_interval == 10);
     CHECK_FALSE(s.run.contact_margin.has_value());
-    CHECK_FALSE(s.run.settle);
+    CHECK(s.run.settle);
     REQUIRE(s.materials.size() == 1);
     CHECK(s.materials[0].young == 30e9);
     CHECK(s.contact.ks == s.contact.kn);   // ks defaults to kn
@@ -59,7 +59,7 @@ dt_safety = 0.5
 output_interval = 0.01
 contact_interval = 3
 contact_margin = 0.002
-settle = true
+settle = false
 [materials.stone]
 density = 2600
 young = 30e9
@@ -131,7 +131,7 @@ solver = "pgs"
     CHECK(s.run.output_interval == 0.01);
     CHECK(s.run.contact_interval == 3);
     CHECK(*s.run.contact_margin == 0.002);
-    CHECK(s.run.settle);
+    CHECK_FALSE(s.run.settle);
     REQUIRE(s.materials.size() == 2);   // name order: soft, stone
     CHECK(s.materials[0].name == "soft");
     CHECK(s.materials[0].poisson == -0.5);
