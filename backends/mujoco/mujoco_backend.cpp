@@ -2,10 +2,13 @@
 
 #include <mujoco/mujoco.h>
 
+#include <algorithm>
 #include <cmath>
 #include <csetjmp>
 #include <cstring>
 #include <sstream>
+#include <string>
+#include <vector>
 
 #include "applied_loads.hpp"
 #include "engine_settings.hpp"
@@ -77,6 +80,11 @@ private:
     }
     Vec3 point_velocity(int block, const Vec3& world_point) const;
     void matched_step();
+    /// matched contact, run.settle: the blocks brought to rest on their springs under gravity
+    /// before t = 0 as dem does (docs/dem.md, "Settled start": gravity ramped, kinetic damping,
+    /// rounds of a fixed count of steps); the fresh data restored if a block moves as a mechanism
+    /// or does not come to rest. Leaves every velocity 0 and notes which start was taken
+    void settle_matched();
     void calibrate_contacts();
     PointSpring pair_spring(const mjContact& c) const;
     double depth_scale(const mjContact& c) const;
@@ -199,9 +207,13 @@ void MujocoBackend::build(const Scene& scene, const RunOptions& options) {
     CurrentHexahedra current(&hexahedra_);
     body_.assign(blocks_.size(), 0);
     int next = 1;
+    for (const RigidBlock& b : blocks_)
+        if (!b.fixed) body_[b.index] = next++;
+    // matched contact is penalty springs: blocks placed at rest start on them settled, as on dem
+    if (matched_ && scene_.run.settle) settle_matched();
     for (const RigidBlock& b : blocks_) {
         if (b.fixed) continue;
-        body_[b.index] = next;
+        next = body_[b.index];
         mjtNum* qv = d_->qvel + m_->jnt_dofadr[m_->body_jntadr[next]];
         const BlockDef& def = scene_.blocks[b.index];
         Vec3 w_local = b.orientation.conjugate() * def.angular_velocity;
@@ -209,7 +221,6 @@ void MujocoBackend::build(const Scene& scene, const RunOptions& options) {
             qv[k] = def.velocity[k];
             qv[3 + k] = w_local[k];
         }
-        ++next;
     }
     mj_forward(m_, d_);
 
@@ -255,6 +266,90 @@ void MujocoBackend::build(const Scene& scene, const RunOptions& options) {
             note(n);
             break;
         }
+}
+
+void MujocoBackend::settle_matched() {
+    // the constants of dem's settling (backends/dem/world_settle.cpp)
+    constexpr double kRampPeriods = 5.0, kRestPeriods = 30.0, kResidual = 1e-3, kMove = 0.02, kTurn = 0.02;
+    constexpr long kStepCap = 20000;
+    const Vec3 g0(m_->opt.gravity[0], m_->opt.gravity[1], m_->opt.gravity[2]);
+    const double g = g0.norm();
+    if (!(g > 0.0)) return;
+    double period = 0.0;
+    std::vector<double> min_edge(blocks_.size(), 1e300), r_max(blocks_.size(), 0.0);
+    for (const RigidBlock& b : blocks_) {
+        if (b.fixed) continue;
+        const double area = *std::min_element(b.face_areas.begin(), b.face_areas.end());
+        period = std::max(period, 2.0 * M_PI * std::sqrt(b.mass / (scene_.contact.kn * area)));
+        for (int f = 0; f < 6; ++f)
+            for (int i = 0; i < 4; ++i)
+                min_edge[b.index] = std::min(min_edge[b.index], (b.corners[kFaceCorners[f][(i + 1) % 4]] -
+                                                                 b.corners[kFaceCorners[f][i]]).norm());
+        for (const Vec3& c : b.corners) r_max[b.index] = std::max(r_max[b.index], (c - b.com).norm());
+    }
+    const long run_steps = long(std::min(1e9, std::ceil(scene_.run.duration / dt_)));
+    const long cap = std::max(kStepCap, run_steps);
+    const long ramp = std::clamp(long(std::ceil(kRampPeriods * period / dt_)), 1L, cap);
+    const long round = std::max(1L, long(std::ceil(kRestPeriods * period / dt_)));
+    const std::vector<mjtNum> qpos0(d_->qpos, d_->qpos + m_->nq);
+    std::string why;
+    bool rest = false;
+    long steps = 0;
+    double kinetic_last = 0.0, residual = 0.0;
+    for (long k = 1; k <= cap && why.empty() && !rest; ++k) {
+        const double scale = std::min(1.0, double(k) / double(ramp));
+        for (int i = 0; i < 3; ++i) m_->opt.gravity[i] = scale * g0[i];
+        matched_step();
+        mj_kinematics(m_, d_);
+        steps = k;
+        if (d_->warning[mjWARN_BADQACC].number > 0 || d_->warning[mjWARN_BADQPOS].number > 0 ||
+            d_->warning[mjWARN_BADQVEL].number > 0 || d_->warning[mjWARN_CNSTRFULL].number > 0 ||
+            d_->warning[mjWARN_CONTACTFULL].number > 0) {
+            why = "the settling failed (MuJoCo warning)";
+            break;
+        }
+        double kinetic = 0.0;
+        residual = 0.0;
+        for (const RigidBlock& b : blocks_) {
+            if (b.fixed) continue;
+            const int body = body_[b.index];
+            const mjtNum* qv = d_->qvel + m_->jnt_dofadr[m_->body_jntadr[body]];
+            const mjtNum* qa = d_->qacc + m_->jnt_dofadr[m_->body_jntadr[body]];
+            const mjtNum* in = m_->body_inertia + 3 * body;
+            for (int i = 0; i < 3; ++i) kinetic += 0.5 * (b.mass * qv[i] * qv[i] + in[i] * qv[3 + i] * qv[3 + i]);
+            residual = std::max({residual, Vec3(qa[0], qa[1], qa[2]).norm() / g,
+                                 Vec3(qa[3], qa[4], qa[5]).norm() * r_max[b.index] / g});
+            const mjtNum* q = d_->qpos + m_->jnt_qposadr[m_->body_jntadr[body]];
+            const mjtNum* q0 = qpos0.data() + m_->jnt_qposadr[m_->body_jntadr[body]];
+            const double move = Vec3(q[0] - q0[0], q[1] - q0[1], q[2] - q0[2]).norm();
+            const double dot = std::abs(q[3] * q0[3] + q[4] * q0[4] + q[5] * q0[5] + q[6] * q0[6]);
+            const double angle = 2.0 * std::acos(std::min(1.0, dot));
+            if (move > kMove * min_edge[b.index] || angle > kTurn)
+                why = "block " + b.name + " moved " + std::to_string(move) + " m and turned " + std::to_string(angle) +
+                      " rad under gravity: not at rest as placed";
+        }
+        // kinetic damping: past a peak of the kinetic energy, every block stops
+        if (kinetic < kinetic_last) {
+            mju_zero(d_->qvel, m_->nv);
+            kinetic_last = 0.0;
+        } else {
+            kinetic_last = kinetic;
+        }
+        if (k >= ramp && (k - ramp) % round == round - 1) rest = residual < kResidual;
+    }
+    for (int i = 0; i < 3; ++i) m_->opt.gravity[i] = g0[i];
+    std::ostringstream n;
+    if (rest) {
+        mju_zero(d_->qvel, m_->nv);
+        d_->time = 0.0;
+        n << "start: settled under gravity in " << steps << " steps (matched springs; unbalanced acceleration "
+          << residual << " g)";
+    } else {
+        if (why.empty()) why = "not at rest after " + std::to_string(steps) + " steps";
+        mj_resetData(m_, d_);
+        n << "start: as given, not settled (" << why << ")";
+    }
+    notes_.push_back(n.str());
 }
 
 StepStatus MujocoBackend::step() {
