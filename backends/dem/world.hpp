@@ -41,8 +41,8 @@ public:
     /// gravity ramps from 0 to g and the blocks relax by kinetic damping (all stopped past each
     /// peak of the kinetic energy), the loads off, no shear spring slipping, in rounds of a fixed
     /// count of steps; kept once the largest unbalanced force at the end of a round is below
-    /// kSettleResidual of a block's weight (within a cap of steps) and no block moved by
-    /// kSettleMove of its shortest edge or turned by kSettleTurn; otherwise the state as given is
+    /// settle::kResidual of a block's weight (within a cap of steps) and no block moved by
+    /// settle::kMove of its shortest edge or turned by settle::kTurn; otherwise the state as given is
     /// restored bit for bit. Either way the blocks then carry the scene's initial velocities, the
     /// energy accounts start at zero and t = 0. Call before start() (docs/dem.md, "Settled start")
     SettleReport settle(double dt);

@@ -3,26 +3,12 @@
 #include <cmath>
 #include <string>
 
+#include "backend/settle.hpp"
 #include "world.hpp"
 
 namespace cairn::dem {
 
 namespace {
-
-// gravity ramps over this many bounce periods of the softest block on its springs, then the
-// blocks relax in rounds of this many more, the unbalanced force judged only at the end of a
-// round: where the settling stops is a fixed count of steps, not where a threshold was crossed
-// (block order and names change only round-off)
-constexpr double kRampPeriods = 5.0;
-constexpr double kRestPeriods = 30.0;
-// and never more steps than this, nor than the run's own steps if those are more
-constexpr long kSettleStepCap = 20000;
-// at rest: no block's unbalanced force (or torque over its r_max) above this fraction of its weight
-constexpr double kSettleResidual = 1e-3;
-// not at rest as placed: a block's centre moved by this fraction of its shortest edge, or it
-// turned by this angle (rad), while it settled (a mechanism: it rocks, slides or falls)
-constexpr double kSettleMove = 0.02;
-constexpr double kSettleTurn = 0.02;
 
 double turn(const Quat& a, const Quat& b) { return 2.0 * std::acos(std::min(1.0, std::abs(a.dot(b)))); }
 
@@ -82,9 +68,9 @@ SettleReport World::settle(double dt) {
         period = std::max(period, 2.0 * M_PI * std::sqrt(b.body.mass / (scene_.contact.kn * area)));
     }
     const long run_steps = long(std::min(1e9, std::ceil(scene_.run.duration / dt)));
-    const long cap = std::max(kSettleStepCap, run_steps);
-    const long ramp = std::clamp(long(std::ceil(kRampPeriods * period / dt)), 1L, cap);
-    const long round = std::max(1L, long(std::ceil(kRestPeriods * period / dt)));
+    const long cap = std::max(settle::kStepCap, run_steps);
+    const long ramp = std::clamp(long(std::ceil(settle::kRampPeriods * period / dt)), 1L, cap);
+    const long round = std::max(1L, long(std::ceil(settle::kRestPeriods * period / dt)));
 
     const std::vector<Block> given = blocks_;
     const ContactSet given_contacts = contacts_;
@@ -116,16 +102,16 @@ SettleReport World::settle(double dt) {
             const double move = (b.body.x - given[i].body.x).norm();
             if (move > rep.largest_move) rep.largest_move = move, rep.block = b.name;
             const double angle = turn(b.body.q, given[i].body.q);
-            if (move > kSettleMove * b.min_edge || angle > kSettleTurn) {
+            if (move > settle::kMove * b.min_edge || angle > settle::kTurn) {
                 rep.why = "block " + b.name + " moved " + std::to_string(move) + " m and turned " +
                           std::to_string(angle) + " rad under gravity: not at rest as placed";
                 break;
             }
         }
-        if (k >= ramp && (k - ramp) % round == round - 1) rest = unbalanced() < kSettleResidual;
+        if (k >= ramp && (k - ramp) % round == round - 1) rest = unbalanced() < settle::kResidual;
     }
     rep.residual = unbalanced();
-    if (rep.why.empty() && !(rep.residual < kSettleResidual))
+    if (rep.why.empty() && !(rep.residual < settle::kResidual))
         rep.why = "not at rest after " + std::to_string(rep.steps) + " steps (unbalanced force " +
                   std::to_string(rep.residual) + " of a block's weight)";
     settling_ = false;

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "applied_loads.hpp"
+#include "backend/settle.hpp"
 #include "engine_settings.hpp"
 #include "error.hpp"
 #include "geometry/hexahedron.hpp"
@@ -269,9 +270,7 @@ void MujocoBackend::build(const Scene& scene, const RunOptions& options) {
 }
 
 void MujocoBackend::settle_matched() {
-    // the constants of dem's settling (backends/dem/world_settle.cpp)
-    constexpr double kRampPeriods = 5.0, kRestPeriods = 30.0, kResidual = 1e-3, kMove = 0.02, kTurn = 0.02;
-    constexpr long kStepCap = 20000;
+    using namespace settle;   // the constants dem settles with
     const Vec3 g0(m_->opt.gravity[0], m_->opt.gravity[1], m_->opt.gravity[2]);
     const double g = g0.norm();
     if (!(g > 0.0)) return;
