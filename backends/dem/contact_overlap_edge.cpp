@@ -28,5 +28,4 @@ EdgeForce edge_force(const ClipPolygon& poly, int i, const Vec3& c, const Vec3& 
     return e;
 }
 
-
 }  // namespace cairn::dem

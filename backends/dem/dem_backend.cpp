@@ -26,10 +26,7 @@ public:
             throw Error(s.origin + ": backends.dem." + key + ": unknown setting of backend dem (it has none)");
         dem::check_build_size(scene_, options.limits);
         double min_edge = 1e300;
-        for (const auto& def : scene_.blocks)
-            for (int s = 0; s < 6; ++s)
-                for (int i = 0; i < 4; ++i)
-                    min_edge = std::min(min_edge, (def.corners[kFaceCorners[s][(i + 1) % 4]] - def.corners[kFaceCorners[s][i]]).norm());
+        for (const auto& def : scene_.blocks) min_edge = std::min(min_edge, shortest_edge(def.corners));
         margin_ = scene_.run.contact_margin ? *scene_.run.contact_margin : 0.05 * min_edge;
         world_ = std::make_unique<dem::World>(scene_, margin_);
         world_->record_contacts(options.record_contacts);

@@ -65,12 +65,9 @@ SettleReport World::settle(double dt) {
     for (const auto& b : blocks_) {
         if (b.fixed) continue;
         const double area = *std::min_element(b.side_area.begin(), b.side_area.end());
-        period = std::max(period, 2.0 * M_PI * std::sqrt(b.body.mass / (scene_.contact.kn * area)));
+        period = std::max(period, settle::bounce_period(b.body.mass, scene_.contact.kn, area));
     }
-    const long run_steps = long(std::min(1e9, std::ceil(scene_.run.duration / dt)));
-    const long cap = std::max(settle::kStepCap, run_steps);
-    const long ramp = std::clamp(long(std::ceil(settle::kRampPeriods * period / dt)), 1L, cap);
-    const long round = std::max(1L, long(std::ceil(settle::kRestPeriods * period / dt)));
+    const settle::Schedule plan(period, dt, scene_.run.duration);
 
     const std::vector<Block> given = blocks_;
     const ContactSet given_contacts = contacts_;
@@ -81,8 +78,8 @@ SettleReport World::settle(double dt) {
     compute_forces();
     double kinetic_last = 0.0;
     bool rest = false;
-    for (long k = 1; k <= cap && rep.why.empty() && !rest; ++k) {
-        gravity_scale_ = std::min(1.0, double(k) / double(ramp));
+    for (long k = 1; k <= plan.cap && rep.why.empty() && !rest; ++k) {
+        gravity_scale_ = plan.gravity(k);
         rep.steps = k;
         if (!step()) {
             rep.why = "the settling failed: " + failure_;
@@ -101,14 +98,10 @@ SettleReport World::settle(double dt) {
             if (b.fixed) continue;
             const double move = (b.body.x - given[i].body.x).norm();
             if (move > rep.largest_move) rep.largest_move = move, rep.block = b.name;
-            const double angle = turn(b.body.q, given[i].body.q);
-            if (move > settle::kMove * b.min_edge || angle > settle::kTurn) {
-                rep.why = "block " + b.name + " moved " + std::to_string(move) + " m and turned " +
-                          std::to_string(angle) + " rad under gravity: not at rest as placed";
-                break;
-            }
+            rep.why = settle::not_at_rest(b.name, move, turn(b.body.q, given[i].body.q), b.min_edge);
+            if (!rep.why.empty()) break;
         }
-        if (k >= ramp && (k - ramp) % round == round - 1) rest = unbalanced() < settle::kResidual;
+        if (plan.judged(k)) rest = unbalanced() < settle::kResidual;
     }
     rep.residual = unbalanced();
     if (rep.why.empty() && !(rep.residual < settle::kResidual))

@@ -270,34 +270,27 @@ void MujocoBackend::build(const Scene& scene, const RunOptions& options) {
 }
 
 void MujocoBackend::settle_matched() {
-    using namespace settle;   // the constants dem settles with
+    using namespace settle;   // dem's schedule and verdicts
     const Vec3 g0(m_->opt.gravity[0], m_->opt.gravity[1], m_->opt.gravity[2]);
     const double g = g0.norm();
     if (!(g > 0.0)) return;
     double period = 0.0;
-    std::vector<double> min_edge(blocks_.size(), 1e300), r_max(blocks_.size(), 0.0);
+    std::vector<double> min_edge(blocks_.size(), 0.0), r_max(blocks_.size(), 0.0);
     for (const RigidBlock& b : blocks_) {
         if (b.fixed) continue;
         const double area = *std::min_element(b.face_areas.begin(), b.face_areas.end());
-        period = std::max(period, 2.0 * M_PI * std::sqrt(b.mass / (scene_.contact.kn * area)));
-        for (int f = 0; f < 6; ++f)
-            for (int i = 0; i < 4; ++i)
-                min_edge[b.index] = std::min(min_edge[b.index], (b.corners[kFaceCorners[f][(i + 1) % 4]] -
-                                                                 b.corners[kFaceCorners[f][i]]).norm());
+        period = std::max(period, bounce_period(b.mass, scene_.contact.kn, area));
+        min_edge[b.index] = shortest_edge(b.corners);
         for (const Vec3& c : b.corners) r_max[b.index] = std::max(r_max[b.index], (c - b.com).norm());
     }
-    const long run_steps = long(std::min(1e9, std::ceil(scene_.run.duration / dt_)));
-    const long cap = std::max(kStepCap, run_steps);
-    const long ramp = std::clamp(long(std::ceil(kRampPeriods * period / dt_)), 1L, cap);
-    const long round = std::max(1L, long(std::ceil(kRestPeriods * period / dt_)));
+    const Schedule plan(period, dt_, scene_.run.duration);
     const std::vector<mjtNum> qpos0(d_->qpos, d_->qpos + m_->nq);
     std::string why;
     bool rest = false;
     long steps = 0;
     double kinetic_last = 0.0, residual = 0.0;
-    for (long k = 1; k <= cap && why.empty() && !rest; ++k) {
-        const double scale = std::min(1.0, double(k) / double(ramp));
-        for (int i = 0; i < 3; ++i) m_->opt.gravity[i] = scale * g0[i];
+    for (long k = 1; k <= plan.cap && why.empty() && !rest; ++k) {
+        for (int i = 0; i < 3; ++i) m_->opt.gravity[i] = plan.gravity(k) * g0[i];
         matched_step();
         mj_kinematics(m_, d_);
         steps = k;
@@ -322,10 +315,7 @@ void MujocoBackend::settle_matched() {
             const mjtNum* q0 = qpos0.data() + m_->jnt_qposadr[m_->body_jntadr[body]];
             const double move = Vec3(q[0] - q0[0], q[1] - q0[1], q[2] - q0[2]).norm();
             const double dot = std::abs(q[3] * q0[3] + q[4] * q0[4] + q[5] * q0[5] + q[6] * q0[6]);
-            const double angle = 2.0 * std::acos(std::min(1.0, dot));
-            if (move > kMove * min_edge[b.index] || angle > kTurn)
-                why = "block " + b.name + " moved " + std::to_string(move) + " m and turned " + std::to_string(angle) +
-                      " rad under gravity: not at rest as placed";
+            if (why.empty()) why = not_at_rest(b.name, move, 2.0 * std::acos(std::min(1.0, dot)), min_edge[b.index]);
         }
         // kinetic damping: past a peak of the kinetic energy, every block stops
         if (kinetic < kinetic_last) {
@@ -334,7 +324,7 @@ void MujocoBackend::settle_matched() {
         } else {
             kinetic_last = kinetic;
         }
-        if (k >= ramp && (k - ramp) % round == round - 1) rest = residual < kResidual;
+        if (plan.judged(k)) rest = residual < kResidual;
     }
     for (int i = 0; i < 3; ++i) m_->opt.gravity[i] = g0[i];
     std::ostringstream n;

@@ -3,6 +3,10 @@
 /// blocks placed at rest sink into the static state of their springs under gravity before t = 0
 /// (docs/dem.md, "Settled start").
 
+#include <algorithm>
+#include <cmath>
+#include <string>
+
 namespace cairn::settle {
 
 /// gravity ramps over this many bounce periods 2π√(m/(kn·A)) of the softest block on its
@@ -19,5 +23,33 @@ constexpr double kResidual = 1e-3;
 /// turned by this angle (rad), while it settled (a mechanism: it rocks, slides or falls)
 constexpr double kMove = 0.02;
 constexpr double kTurn = 0.02;
+
+/// the bounce period 2π√(m/(kn·A)) of a block of mass m (kg) on springs kn (N/m³) over area A (m²), s
+inline double bounce_period(double mass, double kn, double area) { return 2.0 * M_PI * std::sqrt(mass / (kn * area)); }
+
+/// The step counts of one settling.
+struct Schedule {
+    long cap = 1;     ///< at most this many steps
+    long ramp = 1;    ///< steps over which gravity ramps from 0 to g
+    long round = 1;   ///< steps of a round of relaxation
+    /// for the slowest bounce period (s) at the time step dt (s) of a run of `duration` (s)
+    Schedule(double period, double dt, double duration) {
+        cap = std::max(kStepCap, long(std::min(1e9, std::ceil(duration / dt))));
+        ramp = std::clamp(long(std::ceil(kRampPeriods * period / dt)), 1L, cap);
+        round = std::max(1L, long(std::ceil(kRestPeriods * period / dt)));
+    }
+    /// the share of gravity at step k (from 1)
+    double gravity(long k) const { return std::min(1.0, double(k) / double(ramp)); }
+    /// step k ends a round: the unbalanced force is judged there
+    bool judged(long k) const { return k >= ramp && (k - ramp) % round == round - 1; }
+};
+
+/// why block `name`, which moved `move` (m) and turned `angle` (rad) while settling, is not at rest
+/// as placed (shortest edge `min_edge`, m); empty while it is within kMove and kTurn
+inline std::string not_at_rest(const std::string& name, double move, double angle, double min_edge) {
+    if (move <= kMove * min_edge && angle <= kTurn) return {};
+    return "block " + name + " moved " + std::to_string(move) + " m and turned " + std::to_string(angle) +
+           " rad under gravity: not at rest as placed";
+}
 
 }  // namespace cairn::settle

@@ -1,5 +1,6 @@
 #include "geometry/hexahedron.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 
@@ -13,6 +14,13 @@ const std::array<std::array<int, 3>, 8> kCornerSigns = {{
 const std::array<std::array<int, 4>, 6> kFaceCorners = {{
     {0, 3, 2, 1}, {4, 5, 6, 7}, {0, 1, 5, 4}, {1, 2, 6, 5}, {2, 3, 7, 6}, {3, 0, 4, 7},
 }};
+
+double shortest_edge(const Corners& c) {
+    double e = 1e300;
+    for (const auto& f : kFaceCorners)
+        for (int i = 0; i < 4; ++i) e = std::min(e, (c[f[(i + 1) % 4]] - c[f[i]]).norm());
+    return e;
+}
 
 Corners box_corners(const Vec3& size) {
     Corners c;

@@ -22,6 +22,9 @@ extern const std::array<std::array<int, 4>, 6> kFaceCorners;
 /// corners of a box of edge lengths `size` (m) centred on the origin
 Corners box_corners(const Vec3& size);
 
+/// the shortest of the 12 edges, m
+double shortest_edge(const Corners& c);
+
 /// point of the trilinear hexahedron at natural coordinates (ξ, η, ζ) ∈ [-1, 1]³
 Vec3 trilinear_point(const Corners& c, const Vec3& natural);
 

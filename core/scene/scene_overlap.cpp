@@ -11,13 +11,6 @@ namespace cairn::scene_detail {
 
 namespace {
 
-double shortest_edge(const Corners& c) {
-    double e = 1e300;
-    for (const auto& f : kFaceCorners)
-        for (int i = 0; i < 4; ++i) e = std::min(e, (c[f[(i + 1) % 4]] - c[f[i]]).norm());
-    return e;
-}
-
 std::string number(double x) { return message_number(x, 3); }
 
 }  // namespace
