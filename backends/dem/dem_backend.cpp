@@ -129,9 +129,12 @@ public:
         if (!scene_.run.settle)
             n.push_back("start: as given (run.settle = false)");
         else if (settle_.settled)
-            n.push_back("start: settled under gravity in " + std::to_string(settle_.steps) + " steps (largest move " +
-                        num(settle_.largest_move) + " m, block " + settle_.block + "; unbalanced force " +
-                        num(settle_.residual) + " of a block's weight)");
+            n.push_back("start: settled under gravity and the loads at t = 0 in " + std::to_string(settle_.steps) +
+                        " steps (" +
+                        (settle_.slip_refused ? std::string("elastic: with friction on, the loads at t = 0 moved a block")
+                                              : std::to_string(settle_.slip_steps) + " of them with friction slipping") +
+                        "; largest move " + num(settle_.largest_move) + " m, block " + settle_.block +
+                        "; unbalanced force " + num(settle_.residual) + " of a block's weight)");
         else
             n.push_back("start: as given, not settled (" + settle_.why + ")");
         if (world_ && world_->early_refreshes() > 0)

@@ -208,16 +208,19 @@ void World::compute_forces() {
     energy_.contact = ct.stored;
     energy_.dissipated += ct.dissipated;
     active_ = ct.active;
-    for (size_t i = 0; i < loads_.size() && !settling_; ++i) {
+    for (size_t i = 0; i < loads_.size(); ++i) {
         const auto& l = scene_.loads[i];
         Block& b = blocks_[loads_[i].block];
         // a body load (ground motion) acts at the centre of mass, spread like the mass
         Vec3 p = l.body ? b.body.x : world_position(b, loads_[i]);
-        Vec3 f = l.factor(t_) * l.force;
-        // trapezoid rule for the work over the step
-        energy_.external += 0.5 * (f + load_force_[i]).dot(p - load_point_[i]);
-        load_point_[i] = p;
-        load_force_[i] = f;
+        // settling: the loads acting at t = 0, ramped with gravity, their work not booked
+        Vec3 f = settling_ ? gravity_scale_ * l.factor(0.0) * l.force : l.factor(t_) * l.force;
+        if (!settling_) {
+            // trapezoid rule for the work over the step
+            energy_.external += 0.5 * (f + load_force_[i]).dot(p - load_point_[i]);
+            load_point_[i] = p;
+            load_force_[i] = f;
+        }
         if (l.body && b.deformable) {
             const auto& m = b.deformable->lumped_mass();
             for (size_t n = 0; n < b.f.size(); ++n) b.f[n] += (m[n] / b.deformable->mass()) * f;

@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include "backend/settle.hpp"
 #include "block.hpp"
 #include "block_builder.hpp"
 #include "contact.hpp"
@@ -29,6 +30,8 @@ struct SettleReport {
     double largest_move = 0.0;///< the largest move of a block's centre while settling, m
     std::string block;        ///< the block that moved most
     std::string why;          ///< settled = false: why (a block moved as a mechanism, or no rest within the cap)
+    long slip_steps = 0;      ///< of `steps`, those taken with the friction cap on (the second phase)
+    bool slip_refused = false;///< the second phase moved a block (the loads at t = 0 beat friction): phase 1 kept
 };
 
 class World {
@@ -100,6 +103,8 @@ private:
     std::string inversion_message(size_t block) const;
 
     /// settle(): every free block at rest (kinetic damping)
+    /// one phase of settle(): steps first … last of the plan; true once at rest
+    bool relax(const settle::Schedule& plan, long first, long last, const std::vector<Block>& given, SettleReport& rep);
     void stop_blocks();
     /// largest unbalanced force (rigid: also torque over r_max) of a free block, over its weight
     double unbalanced() const;
@@ -107,7 +112,7 @@ private:
     double motion_energy() const;
 
     const Scene& scene_;
-    bool settling_ = false;      // settle(): gravity scaled, loads off
+    bool settling_ = false;      // settle(): gravity and the loads at t = 0 scaled
     double gravity_scale_ = 1.0; // settle(): the ramp of gravity
     double margin_ = 0.0;   // the scene's broad-phase margin, m
     double dt_ = 0.0;

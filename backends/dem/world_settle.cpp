@@ -52,6 +52,39 @@ double World::unbalanced() const {
     return worst;
 }
 
+// the relaxation of one phase of settle(): steps `first` … `last` of the plan, kinetic damping,
+// the unbalanced force judged at the ends of rounds; true once at rest (rep.why set on a mechanism)
+bool World::relax(const settle::Schedule& plan, long first, long last, const std::vector<Block>& given,
+                  SettleReport& rep) {
+    double kinetic_last = 0.0;
+    for (long k = first; k <= last; ++k) {
+        gravity_scale_ = plan.gravity(k);
+        rep.steps = k;
+        if (!step()) {
+            rep.why = "the settling failed: " + failure_;
+            return false;
+        }
+        // kinetic damping: past a peak of the kinetic energy, every block stops
+        const double kinetic_now = motion_energy();
+        if (kinetic_now < kinetic_last) {
+            stop_blocks();
+            kinetic_last = 0.0;
+        } else {
+            kinetic_last = kinetic_now;
+        }
+        for (size_t i = 0; i < blocks_.size(); ++i) {
+            const Block& b = blocks_[i];
+            if (b.fixed) continue;
+            const double move = (b.body.x - given[i].body.x).norm();
+            if (move > rep.largest_move) rep.largest_move = move, rep.block = b.name;
+            rep.why = settle::not_at_rest(b.name, move, turn(b.body.q, given[i].body.q), b.min_edge);
+            if (!rep.why.empty()) return false;
+        }
+        if (plan.judged(k) && unbalanced() < settle::kResidual) return true;
+    }
+    return false;
+}
+
 SettleReport World::settle(double dt) {
     SettleReport rep;
     dt_ = dt;
@@ -72,38 +105,35 @@ SettleReport World::settle(double dt) {
     const std::vector<Block> given = blocks_;
     const ContactSet given_contacts = contacts_;
     stop_blocks();
+    // phase 1: the springs' elastic static state, no shear spring slipping (path independent)
     contacts_.allow_slip(false);
     settling_ = true;
     gravity_scale_ = 0.0;
     compute_forces();
-    double kinetic_last = 0.0;
-    bool rest = false;
-    for (long k = 1; k <= plan.cap && rep.why.empty() && !rest; ++k) {
-        gravity_scale_ = plan.gravity(k);
-        rep.steps = k;
-        if (!step()) {
-            rep.why = "the settling failed: " + failure_;
-            break;
+    bool rest = relax(plan, 1, plan.cap, given, rep);
+    if (rest) {
+        // phase 2: the cap back on, the springs above μ·N slip to it while the blocks relax on; a
+        // block the loads at t = 0 push past friction slides on (it moves): it starts from phase 1
+        const std::vector<Block> elastic = blocks_;
+        const ContactSet elastic_contacts = contacts_;
+        rep.residual = unbalanced();
+        const SettleReport before = rep;
+        contacts_.allow_slip(true);
+        stop_blocks();
+        compute_forces();
+        const long first = rep.steps + 1;
+        rep.slip_steps = rep.steps;
+        if (!relax(plan, first, std::min(plan.cap, first + settle::kSlipRounds * plan.round - 1), given, rep)) {
+            blocks_ = elastic;
+            contacts_ = elastic_contacts;
+            rep = before;
+            rep.slip_refused = true;
         }
-        // kinetic damping: past a peak of the kinetic energy, every block stops
-        const double kinetic_now = motion_energy();
-        if (kinetic_now < kinetic_last) {
-            stop_blocks();
-            kinetic_last = 0.0;
-        } else {
-            kinetic_last = kinetic_now;
-        }
-        for (size_t i = 0; i < blocks_.size(); ++i) {
-            const Block& b = blocks_[i];
-            if (b.fixed) continue;
-            const double move = (b.body.x - given[i].body.x).norm();
-            if (move > rep.largest_move) rep.largest_move = move, rep.block = b.name;
-            rep.why = settle::not_at_rest(b.name, move, turn(b.body.q, given[i].body.q), b.min_edge);
-            if (!rep.why.empty()) break;
-        }
-        if (plan.judged(k)) rest = unbalanced() < settle::kResidual;
+        rep.slip_steps = rep.steps - rep.slip_steps;
+        if (!rep.slip_refused) rep.residual = unbalanced();
+    } else {
+        rep.residual = unbalanced();
     }
-    rep.residual = unbalanced();
     if (rep.why.empty() && !(rep.residual < settle::kResidual))
         rep.why = "not at rest after " + std::to_string(rep.steps) + " steps (unbalanced force " +
                   std::to_string(rep.residual) + " of a block's weight)";

@@ -289,8 +289,21 @@ void MujocoBackend::settle_matched() {
     bool rest = false;
     long steps = 0;
     double kinetic_last = 0.0, residual = 0.0;
+    // the loads acting at t = 0 settle with gravity, ramped as it is
+    std::vector<AppliedLoad> loads;
+    applied_loads(scene_, 0.0, loads);
     for (long k = 1; k <= plan.cap && why.empty() && !rest; ++k) {
         for (int i = 0; i < 3; ++i) m_->opt.gravity[i] = plan.gravity(k) * g0[i];
+        std::memset(d_->xfrc_applied, 0, sizeof(mjtNum) * 6 * m_->nbody);
+        for (const AppliedLoad& l : loads) {
+            const int body = body_[l.block];
+            const Vec3 f = plan.gravity(k) * l.force;
+            const Vec3 torque = (point(l.block, l.point) - com(body)).cross(f);
+            for (int i = 0; i < 3; ++i) {
+                d_->xfrc_applied[6 * body + i] += f[i];
+                d_->xfrc_applied[6 * body + 3 + i] += torque[i];
+            }
+        }
         matched_step();
         mj_kinematics(m_, d_);
         steps = k;
@@ -331,7 +344,7 @@ void MujocoBackend::settle_matched() {
     if (rest) {
         mju_zero(d_->qvel, m_->nv);
         d_->time = 0.0;
-        n << "start: settled under gravity in " << steps << " steps (matched springs; unbalanced acceleration "
+        n << "start: settled under gravity and the loads at t = 0 in " << steps << " steps (matched springs; unbalanced acceleration "
           << residual << " g)";
     } else {
         if (why.empty()) why = "not at rest after " + std::to_string(steps) + " steps";

@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "analytic/oracles.hpp"
+#include "geometry/hexahedron.hpp"
 #include "analytic/winkler_block.hpp"
 #include "cases/case_util.hpp"
 #include "cases/case_kind.hpp"
@@ -80,8 +81,14 @@ CaseAnalysis analyse_friction(const Scene& scene, const std::vector<Sample>& s, 
         if (!half.empty()) { r.event_time = half[0]; r.has_event = true; }
         return r;
     }
+    // from where the scene placed it: a settled start has taken up part of the shear before t = 0
+    // when the load acts from t = 0 (docs/dem.md, Settled start)
     int p = probe_index(scene, "base");
-    Series u = p >= 0 ? probe_series(s, p, 0, true) : com_series(s, free_index(scene, a), 0, true);
+    Series u = p >= 0 ? probe_series(s, p, 0, false) : com_series(s, free_index(scene, a), 0, false);
+    const BlockDef& placed = scene.blocks.at(size_t(a));
+    const Vec3 local = p >= 0 ? scene.probes.at(size_t(p)).point : mass_properties(placed.corners, 1.0).centre;
+    const double x0 = (placed.position + placed.orientation * local).x();
+    for (double& y : u.y) y -= x0;
     r.quantity = "x displacement of A's base centre, m";
     r.measured = u;
     r.analytic = friction_curve(scene, {}, u.t);

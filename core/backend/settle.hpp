@@ -15,6 +15,8 @@ namespace cairn::settle {
 /// threshold was crossed (block order and names change only round-off)
 constexpr double kRampPeriods = 5.0;
 constexpr double kRestPeriods = 30.0;
+/// the second phase (friction cap back on) takes at most this many rounds
+constexpr long kSlipRounds = 2;
 /// never more steps than this, nor than the run's own steps if those are more
 constexpr long kStepCap = 20000;
 /// at rest: no block's unbalanced force (or torque over its r_max) above this fraction of its weight

@@ -2,9 +2,12 @@
 // contact springs under gravity before t = 0; a scene not at rest as placed starts as given.
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <cmath>
+#include <string>
 #include <vector>
 
+#include "analytic/winkler_block.hpp"
 #include "dem_test_util.hpp"
 #include "support/scene_builder.hpp"
 
@@ -45,26 +48,117 @@ TEST_CASE("a settled block on an incline flatter than atan(mu) holds without con
         auto b = test::build_dem(s);
         auto base = [](const Sample& smp) -> Vec3 { return smp.blocks[0].position + smp.blocks[0].orientation * Vec3(0, 0, -0.2); };
         const Vec3 start = base(b->sample());
-        // the settled state is the static one of a rigid block on uniform springs, no spring
-        // slipping while it settles: the base sunk by W cos θ/(kn A) = 9.6 µm and sheared by
-        // W sin θ/(ks A) = 3.5 µm. 1 %: the settling ends with an unbalanced force below 1e-3 of
-        // the weight (measured 1e-12; paper scheme exact to 1e-5). 5 % for the overlap scheme's
-        // shear: it scales a sub-contact's offset by √(A_old/A) as the clipped area grows while the
-        // face beds in (docs/dem.md), so the base travels more than its springs' final stretch
-        // (measured +3.6 %)
+        // the settled state is the static one of a rigid block on its springs: first elastic (no
+        // spring slipping), then with the friction cap back on, the springs above μ·N slip to it.
+        // The base sinks by W cos θ/(kn A) = 9.6 µm (1 %: the settling ends with an unbalanced
+        // force below 1e-3 of the weight). The shear's couple puts the resultant at
+        // e = h tan θ = 0.0728 m > B/6 from the centre, so the uphill edge lifts and the lightly
+        // pressed springs near it slip: the base shears by the Winkler block's u (compare's
+        // oracle: weight W cos θ, H = W sin θ at h = 0.2 m), 4.50 µm against the uniform
+        // W sin θ/(ks A) = 3.5 µm; with the pressure sampled finely (n = 16, grid 0.025 m) within
+        // 1 %, and the defaults (n = 4, grid 0.1 m: −2.7 %, −2.9 %) converge to it
         INFO("scheme " << to_string(scheme));
         const double elastic = w * std::sin(theta) / (kn * area);
+        const oracle::WinklerBlock winkler{0.4, 0.4, kn, kn, mu, w * std::cos(theta)};
         CHECK(-(start - placed).dot(normal) == Approx(w * std::cos(theta) / (kn * area)).epsilon(0.01));
-        CHECK((start - placed).dot(down) ==
-              Approx(elastic).epsilon(scheme == ContactScheme::overlap ? 0.05 : 0.01));
+        Scene fine = s;
+        fine.contact.subdivision = 16;
+        fine.contact.grid_spacing = 0.025;
+        CHECK((base(test::build_dem(fine)->sample()) - placed).dot(down) ==
+              Approx(winkler.shear_displacement(w * std::sin(theta), 0.2)).epsilon(0.01));
         double worst = 0.0;
         test::run_dem(*b, 3.0, [&](const Sample& smp) { worst = std::max(worst, std::abs((base(smp) - start).dot(down))); });
         INFO("largest slip " << worst << " m, elastic shear " << elastic << " m");
-        // holds: the uniform shear of the settled state exceeds μ·N near the uphill edge, where the
-        // shear's couple unloads the base, and those springs slip once at the start; the block then
-        // vibrates undamped about a fixed mean (measured on the centre of mass: 0.55-1.8 µm over
-        // 6 s). The issue's bound: no more than the elastic shear, for as long as the load stays
-        CHECK(worst < elastic);
+        // holds: the settled state is static with friction honoured, and nothing changes at t = 0,
+        // so the block stays where it settled (measured 1e-15 m over 3 s; before the friction
+        // phase of the settling, the springs near the uphill edge slipped once at the start and
+        // the base then vibrated by 0.55-1.8 µm). The issue's bound is the elastic shear; 1e-3 of
+        // it pins that the start is static
+        CHECK(worst < 1e-3 * elastic);
+    }
+}
+
+namespace {
+
+// a 0.4 m cube settled on a flat slab, kn = ks = 1e9 N/m³, no contact damping, under a horizontal
+// load H (N) acting from t = 0 at `point` (block frame, m)
+Scene loaded_cube(double mu, double h, const Vec3& point, ContactScheme scheme) {
+    Scene s = test::stone_scene(mu);
+    s.contact.kn = s.contact.ks = 1e9;
+    s.contact.scheme = scheme;
+    test::add_box(s, "B", Vec3(3.0, 2.0, 0.5), Vec3(0, 0, -0.25), true);
+    test::add_box(s, "A", Vec3(0.4, 0.4, 0.4), Vec3(0, 0, 0.2), false);
+    LoadDef load;
+    load.block = 1;
+    load.force = Vec3(h, 0, 0);
+    load.point = point;
+    s.loads.push_back(load);
+    s.run.settle = true;
+    return s;
+}
+
+}  // namespace
+
+TEST_CASE("a block under a step load from t = 0 that lifts its heel starts settled under it and holds undamped",
+          "[dem][settle]") {
+    // H acts at once from t = 0, below μW = 0.6 W, with a moment that lifts the heel (e = H·h/W >
+    // B/6 = 0.067 m): 0.45 W at the centroid (e = 0.09 m), 0.3 W at the top (e = 0.12 m). Started
+    // as placed and loaded at once, the undamped springs overshoot and the block walked (0.20 m in
+    // 2 s at the centroid, docs/dem.md). The loads acting at t = 0 settle with gravity, then the
+    // springs above μ·N slip to it: the start is the static state of a rigid block on a Winkler
+    // base with local Coulomb slip, and nothing changes at t = 0
+    const double w = kDensity * 0.064 * 9.81, kn = 1e9, mu = 0.6;
+    struct Case { double share, height; };
+    auto base = [](const Sample& smp) { return (smp.blocks[0].position + smp.blocks[0].orientation * Vec3(0, 0, -0.2)).x(); };
+    const oracle::WinklerBlock winkler{0.4, 0.4, kn, kn, mu, w};
+    for (ContactScheme scheme : {ContactScheme::overlap, ContactScheme::paper})
+        for (Case c : {Case{0.45, 0.2}, Case{0.3, 0.4}}) {
+            INFO("scheme " << to_string(scheme) << ", H = " << c.share << " W at " << c.height << " m");
+            const Vec3 point(0, 0, c.height - 0.2);
+            {
+                // the settled base shear against the Winkler block's, with the triangular pressure
+                // over the 0.24-0.33 m in contact sampled finely (n = 16, grid 0.025 m; measured
+                // +0.0 % to −0.6 %; 1 %: the settling's unbalanced force is below 1e-3 of the
+                // weight). At the defaults the sampling gives −1.5 % and −3.2 % (n = 4), −3.3 % and
+                // −10 % (grid 0.1 m), converging to it (docs/dem.md)
+                Scene fine = loaded_cube(mu, c.share * w, point, scheme);
+                fine.contact.subdivision = 16;
+                fine.contact.grid_spacing = 0.025;
+                auto b = test::build_dem(fine);
+                CHECK(base(b->sample()) == Approx(winkler.shear_displacement(c.share * w, c.height)).epsilon(0.01));
+            }
+            auto b = test::build_dem(loaded_cube(mu, c.share * w, point, scheme));
+            bool slipped_phase = false;
+            for (const auto& n : b->notes()) slipped_phase = slipped_phase || n.find("with friction slipping") != std::string::npos;
+            CHECK(slipped_phase);
+            const double start = base(b->sample());
+            double worst = 0.0;
+            test::run_dem(*b, 2.0, [&](const Sample& smp) { worst = std::max(worst, std::abs(base(smp) - start)); });
+            // holds: no more than its elastic shear H/(ks A) (the issue's bound); measured to
+            // round-off, as the start is static
+            const double elastic = c.share * w / (kn * 0.16);
+            INFO("largest slip " << worst << " m, elastic shear " << elastic << " m");
+            CHECK(worst < 1e-3 * elastic);
+        }
+}
+
+TEST_CASE("a load at t = 0 beyond friction settles elastically and then slides at (H/W - mu) g", "[dem][settle]") {
+    // H = 0.8 W at the base centre, μ = 0.6: with friction on the block would slide while
+    // settling, so the settling keeps its elastic phase (the note says so) and the block slides
+    // from t = 0 at a = (H/W − μ) g, s = a t²/2 = 0.981 m at 1 s
+    const double w = kDensity * 0.064 * 9.81, mu = 0.6, share = 0.8;
+    for (ContactScheme scheme : {ContactScheme::overlap, ContactScheme::paper}) {
+        auto b = test::build_dem(loaded_cube(mu, share * w, Vec3(0, 0, -0.2), scheme));
+        bool elastic = false;
+        for (const auto& n : b->notes()) elastic = elastic || n.find("elastic: with friction on") != std::string::npos;
+        INFO("scheme " << to_string(scheme));
+        CHECK(elastic);
+        const double x0 = b->sample().blocks[0].position.x();
+        double x = 0.0;
+        test::run_dem(*b, 1.0, [&](const Sample& smp) { x = smp.blocks[0].position.x() - x0; });
+        // 1 %: the shear springs start stretched by H/(ks A) = 10 µm and slip to μ·N at once, a
+        // start-up of micrometres against 0.98 m
+        CHECK(x == Approx(0.5 * (share - mu) * 9.81).epsilon(0.01));
     }
 }
 
