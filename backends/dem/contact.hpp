@@ -51,10 +51,14 @@ struct SubAnchor {
     bool seen = false;          ///< in contact at this evaluation
     double fd = 0.0;            ///< normal dashpot force at the last evaluation, N
     Vec3 fds = Vec3::Zero();    ///< shear dashpot force at the last evaluation, world, N
-    double fel = 0.0;           ///< elastic normal force kn·∫d dA at the last evaluation, N
+    double fel = 0.0;           ///< elastic normal force kn·∫d dA at the last evaluation, N (0 where clipped)
+    double spring = 0.0;        ///< kn·∫d dA at the last evaluation, N, also where the dashpot cancelled it
     double stored = 0.0;        ///< normal-spring energy ½kn·∫d² dA at the last evaluation, J
     Vec3 normal = Vec3::UnitZ();///< the target's outward normal at the last evaluation
     NodeWeights hit_at, target_at;  ///< where its normal force acted at the last evaluation
+    bool edged = false;         ///< edge forces on the target's edges acted at the last evaluation
+    Vec3 fs = Vec3::Zero();     ///< shear force (spring and dashpot) on the hitting block at the last evaluation, N
+    NodeWeights shear_hit, shear_target;  ///< where it acted
 };
 
 /// The force of one sub-contact, or the edge force of one of its edges on the target's edge,

@@ -246,11 +246,18 @@ void ContactSet::evaluate_overlap(std::vector<Block>& blocks, double dt, long be
                             // normal: the exact integral of kn·d, plus the dashpot, never pulling
                             const double fn_el = law_.kn * in.d1;
                             const double fn = std::max(0.0, fn_el + cn_area * in.area * closing);
-                            // the dashpot's work as the leapfrog step does it: the mean of
-                            // its forces at both ends of the step times the step's closing
+                            // the dashpot's work as the leapfrog step does it: each end's force
+                            // times the step's closing where that force acted (the start's at
+                            // the last evaluation's point and normal: the pressure centre runs
+                            // across a face that lifts or lands)
                             const double fd = fn - fn_el;
                             Vec3 fds = Vec3::Zero();
-                            tot.dissipated += 0.5 * (anchor->fd + fd) * closing * dt;
+                            const double closing_before =
+                                fresh ? 0.0 : -(anchor->hit_at.velocity(hb) - anchor->target_at.velocity(tb)).dot(anchor->normal);
+                            tot.dissipated += 0.5 * (anchor->fd * closing_before + fd * closing) * dt;
+                            const double stored_before = fresh ? 0.0 : anchor->stored;
+                            const double spring_before = fresh ? 0.0 : anchor->spring;
+                            const bool edged_before = !fresh && anchor->edged;
                             anchor->fd = fd;
                             tot.stored += 0.5 * law_.kn * in.d2;
                             // a sub-contact that entered in this step pushed only for part of it:
@@ -267,6 +274,7 @@ void ContactSet::evaluate_overlap(std::vector<Block>& blocks, double dt, long be
                                 }
                             }
                             anchor->fel = fn > 0.0 ? fn_el : 0.0;
+                            anchor->spring = fn_el;
                             anchor->stored = 0.5 * law_.kn * in.d2;
                             anchor->normal = nt;
                             anchor->hit_at = wh_n;
@@ -322,6 +330,9 @@ void ContactSet::evaluate_overlap(std::vector<Block>& blocks, double dt, long be
                                 anchor->area = 0.0;
                             }
                             anchor->fds = fds;
+                            anchor->fs = fs;
+                            anchor->shear_hit = wh;
+                            anchor->shear_target = wt;
                             const Vec3 force = fn * nt + fs;
                             const SubForce sub{wh, wt, force, nt, wh_n, wt_n};
                             if (keep_forces) c.sub_forces.push_back(sub);
@@ -335,15 +346,29 @@ void ContactSet::evaluate_overlap(std::vector<Block>& blocks, double dt, long be
                             // (corrected or consistent mass) blow up as it collapses (an element
                             // turned inside out at 0.53 s), and its balance closes without them
                             const ClipPolygon& cell_poly = polys[0];   // a rigid face's cell, clipped whole
+                            anchor->edged = false;
                             for (int i = 0; i < (split ? 0 : cell_poly.n); ++i) {
                                 const int k = int(cell_poly.by[size_t(i)]) - 1;
                                 if (k < 0 || k == side_count) continue;
                                 const EdgeForce e = edge_force(cell_poly, i, ct, nt, cons[size_t(k)], in.slope, law_.kn);
                                 if (e.force.isZero(0.0)) continue;
+                                anchor->edged = true;
                                 const NodeWeights eh = node_weights(hb, c.hit_face, e.point), et = node_weights(tb, tf, e.point);
                                 const SubForce edge{eh, et, e.force, nt, eh, et};
                                 if (keep_forces) c.sub_forces.push_back(edge);
                                 else edge.spread(hb, tb);
+                            }
+                            // a face pulling away faster than its springs relax: the dashpot
+                            // cancels the spring (the force is clipped at zero, nothing pushes), so
+                            // its work is minus the spring's, the spring's exact energy change, not
+                            // the trapezoid of its force: U = ½kn∫d² dA over a clipped region that
+                            // shrinks is not quadratic in the motion (a wedge's goes as its depth
+                            // cubed), and the trapezoid booked more than the spring gave back
+                            // (docs/dem.md, Energy). Rigid faces away from the target's edges
+                            // (their boundary forces share the work)
+                            if (!fresh && !split && !anchor->edged && !edged_before && spring_before > 0.0 && fn == 0.0) {
+                                const double trapezoid = 0.5 * (spring_before * closing_before + fn_el * closing) * dt;
+                                tot.dissipated += trapezoid - (anchor->stored - stored_before);
                             }
                             ++tot.active;
                         }
@@ -359,7 +384,16 @@ void ContactSet::evaluate_overlap(std::vector<Block>& blocks, double dt, long be
                 continue;
             }
             tot.dissipated += std::max(0.0, a.energy);
+            // its last shear force did work over the step too (the start's half kick)
+            tot.dissipated -= 0.5 * dt * a.fs.dot(a.shear_hit.velocity(hb) - a.shear_target.velocity(tb));
             if (a.fd == 0.0 && !(a.fel > 0.0)) continue;
+            // it left in this step, its force clipped to zero at the last evaluation (the
+            // dashpot cancelled the spring): nothing pushed, and the dashpot took the spring's
+            // energy U0
+            if (!(a.fel > 0.0) && a.spring > 0.0 && !a.edged) {
+                tot.dissipated += a.stored;
+                continue;
+            }
             // it left in this step: its last dashpot force did work over the step, and its
             // spring pushed only until the gap opened: the end-of-step half kick takes back the
             // part of the start's force whose trapezoid work exceeds its energy U0, 2U0/|δ| − F0
