@@ -40,14 +40,16 @@ public:
     World(const Scene& scene, double margin);
     /// set the time step (s) and evaluate the forces at t = 0; call once before step()
     void start(double dt);
-    /// bring the free blocks to rest under gravity before t = 0 at the time step dt (s): from rest,
-    /// gravity ramps from 0 to g and the blocks relax by kinetic damping (all stopped past each
-    /// peak of the kinetic energy), the loads off, no shear spring slipping, in rounds of a fixed
-    /// count of steps; kept once the largest unbalanced force at the end of a round is below
-    /// settle::kResidual of a block's weight (within a cap of steps) and no block moved by
-    /// settle::kMove of its shortest edge or turned by settle::kTurn; otherwise the state as given is
-    /// restored bit for bit. Either way the blocks then carry the scene's initial velocities, the
-    /// energy accounts start at zero and t = 0. Call before start() (docs/dem.md, "Settled start")
+    /// bring the free blocks to rest under gravity and the loads acting at t = 0 before t = 0 at the
+    /// time step dt (s): from rest, gravity and those loads ramp from 0 and the blocks relax by
+    /// kinetic damping (all stopped past each peak of the kinetic energy) in rounds of a fixed
+    /// count of steps, first with no shear spring slipping, then (at most settle::kSlipRounds
+    /// rounds) with the friction cap on; a phase is done once the largest unbalanced force at the
+    /// end of a round is below settle::kResidual of a block's weight (within a cap of steps) and no
+    /// block moved by settle::kMove of its shortest edge or turned by settle::kTurn. A second phase
+    /// that fails leaves the first's state; a first that fails restores the state as given bit for
+    /// bit. Either way the blocks then carry the scene's initial velocities, the energy accounts
+    /// start at zero and t = 0. Call before start() (docs/dem.md, "Settled start")
     SettleReport settle(double dt);
     /// advance one step; false if the run can no longer be trusted (see failure())
     bool step();

@@ -1,4 +1,5 @@
-// The settled start: the blocks brought to rest under gravity before t = 0 (docs/dem.md).
+// The settled start: the blocks brought to rest under gravity and the loads acting at t = 0,
+// before t = 0 (docs/dem.md).
 #include <algorithm>
 #include <cmath>
 #include <string>

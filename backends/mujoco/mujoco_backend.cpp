@@ -81,8 +81,9 @@ private:
     }
     Vec3 point_velocity(int block, const Vec3& world_point) const;
     void matched_step();
-    /// matched contact, run.settle: the blocks brought to rest on their springs under gravity
-    /// before t = 0 as dem does (docs/dem.md, "Settled start": gravity ramped, kinetic damping,
+    /// matched contact, run.settle: the blocks brought to rest on their springs under gravity and
+    /// the loads acting at t = 0 before t = 0 as dem does (docs/dem.md, "Settled start": gravity
+    /// and those loads ramped, MuJoCo's friction on throughout, kinetic damping,
     /// rounds of a fixed count of steps); the fresh data restored if a block moves as a mechanism
     /// or does not come to rest. Leaves every velocity 0 and notes which start was taken
     void settle_matched();

@@ -1,6 +1,7 @@
 #pragma once
 /// The settled start (run.settle) shared by the penalty-contact backends, dem and MuJoCo matched:
-/// blocks placed at rest sink into the static state of their springs under gravity before t = 0
+/// blocks placed at rest sink into the static state of their springs under gravity and the loads
+/// acting at t = 0 before t = 0
 /// (docs/dem.md, "Settled start").
 
 #include <algorithm>
