@@ -104,9 +104,9 @@ private:
     bool state_finite() const;
     std::string inversion_message(size_t block) const;
 
-    /// settle(): every free block at rest (kinetic damping)
     /// one phase of settle(): steps first … last of the plan; true once at rest
     bool relax(const settle::Schedule& plan, long first, long last, const std::vector<Block>& given, SettleReport& rep);
+    /// settle(): every free block at rest (kinetic damping)
     void stop_blocks();
     /// largest unbalanced force (rigid: also torque over r_max) of a free block, over its weight
     double unbalanced() const;

@@ -123,15 +123,15 @@ SettleReport World::settle(double dt) {
         stop_blocks();
         compute_forces();
         const long first = rep.steps + 1;
-        rep.slip_steps = rep.steps;
-        if (!relax(plan, first, std::min(plan.cap, first + settle::kSlipRounds * plan.round - 1), given, rep)) {
+        if (relax(plan, first, std::min(plan.cap, first + settle::kSlipRounds * plan.round - 1), given, rep)) {
+            rep.slip_steps = rep.steps - first + 1;
+            rep.residual = unbalanced();
+        } else {
             blocks_ = elastic;
             contacts_ = elastic_contacts;
             rep = before;
             rep.slip_refused = true;
         }
-        rep.slip_steps = rep.steps - rep.slip_steps;
-        if (!rep.slip_refused) rep.residual = unbalanced();
     } else {
         rep.residual = unbalanced();
     }

@@ -87,6 +87,8 @@ private:
     /// rounds of a fixed count of steps); the fresh data restored if a block moves as a mechanism
     /// or does not come to rest. Leaves every velocity 0 and notes which start was taken
     void settle_matched();
+    /// the loads × scale at their material points, as MuJoCo's applied body forces (N, N·m)
+    void apply_loads(const std::vector<AppliedLoad>& loads, double scale);
     void calibrate_contacts();
     PointSpring pair_spring(const mjContact& c) const;
     double depth_scale(const mjContact& c) const;
@@ -295,16 +297,7 @@ void MujocoBackend::settle_matched() {
     applied_loads(scene_, 0.0, loads);
     for (long k = 1; k <= plan.cap && why.empty() && !rest; ++k) {
         for (int i = 0; i < 3; ++i) m_->opt.gravity[i] = plan.gravity(k) * g0[i];
-        std::memset(d_->xfrc_applied, 0, sizeof(mjtNum) * 6 * m_->nbody);
-        for (const AppliedLoad& l : loads) {
-            const int body = body_[l.block];
-            const Vec3 f = plan.gravity(k) * l.force;
-            const Vec3 torque = (point(l.block, l.point) - com(body)).cross(f);
-            for (int i = 0; i < 3; ++i) {
-                d_->xfrc_applied[6 * body + i] += f[i];
-                d_->xfrc_applied[6 * body + 3 + i] += torque[i];
-            }
-        }
+        apply_loads(loads, plan.gravity(k));
         matched_step();
         mj_kinematics(m_, d_);
         steps = k;
@@ -355,21 +348,26 @@ void MujocoBackend::settle_matched() {
     notes_.push_back(n.str());
 }
 
-StepStatus MujocoBackend::step() {
-    CurrentHexahedra current(&hexahedra_);
-    // loads at their material points: xfrc_applied persists, so it is rewritten every step
+void MujocoBackend::apply_loads(const std::vector<AppliedLoad>& loads, double scale) {
+    // xfrc_applied persists, so it is rewritten every step
     std::memset(d_->xfrc_applied, 0, sizeof(mjtNum) * 6 * m_->nbody);
-    const double t = d_->time;
-    std::vector<AppliedLoad> loads;
-    applied_loads(scene_, t, loads);
     for (const AppliedLoad& l : loads) {
         const int body = body_[l.block];
-        Vec3 torque = (point(l.block, l.point) - com(body)).cross(l.force);
+        const Vec3 f = scale * l.force;
+        const Vec3 torque = (point(l.block, l.point) - com(body)).cross(f);
         for (int k = 0; k < 3; ++k) {
-            d_->xfrc_applied[6 * body + k] += l.force[k];
+            d_->xfrc_applied[6 * body + k] += f[k];
             d_->xfrc_applied[6 * body + 3 + k] += torque[k];
         }
     }
+}
+
+StepStatus MujocoBackend::step() {
+    CurrentHexahedra current(&hexahedra_);
+    const double t = d_->time;
+    std::vector<AppliedLoad> loads;
+    applied_loads(scene_, t, loads);
+    apply_loads(loads, 1.0);
     auto velocity = [&](int block, const Vec3& p) { return point_velocity(block, point(block, p)); };
     const double p0 = cairn::load_power(loads, velocity);
     if (matched_) matched_step();

@@ -3,10 +3,10 @@
 #include <cmath>
 
 #include "analytic/oracles.hpp"
-#include "geometry/hexahedron.hpp"
 #include "analytic/winkler_block.hpp"
 #include "cases/case_util.hpp"
 #include "cases/case_kind.hpp"
+#include "geometry/hexahedron.hpp"
 
 namespace cairn::cases {
 

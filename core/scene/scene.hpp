@@ -146,7 +146,7 @@ struct RunControl {
     double output_interval = 1e-3;    ///< time between trajectory rows, s (rounded to whole steps)
     int contact_interval = 10;        ///< steps between contact-pair refreshes (n)
     std::optional<double> contact_margin;  ///< broad-phase margin, m; empty = auto
-    bool settle = true;               ///< penalty engines: bring the blocks to rest under gravity before t = 0
+    bool settle = true;               ///< penalty engines: bring the blocks to rest under gravity and the loads at t = 0 before t = 0
 };
 
 /// The analytic reference the scene is meant to match (read by the compare layer).
