@@ -62,6 +62,7 @@ void diff_runs(CaseResult& c) {
     for (size_t i = 0; i < c.scene.probes.size(); ++i)
         if (c.scene.probes[i].name == "node10") probe = int(i);
     if (probe < 0 && !c.scene.probes.empty()) probe = 0;
+    const std::string probe_name = probe >= 0 ? c.scene.probes[size_t(probe)].name : "";
     for (auto& r : c.runs) {
         if (!r.analysed || &r == base) continue;
         double shift = 0.0;
@@ -74,11 +75,11 @@ void diff_runs(CaseResult& c) {
         if (probe >= 0) {
             r.diffs.push_back(metrics::info("probe path RMS" + vs, "m",
                                             metrics::probe_path_rms(r.samples, base->samples, probe, 0.0), NAN,
-                                            "node10, same times"));
+                                            probe_name + ", same times"));
             if (shift != 0.0)
                 r.diffs.push_back(metrics::info("probe path RMS" + vs + ", aligned", "m",
                                                 metrics::probe_path_rms(r.samples, base->samples, probe, shift), NAN,
-                                                "node10, time shifted by the first-event shift"));
+                                                probe_name + ", time shifted by the first-event shift"));
         }
     }
 }

@@ -117,6 +117,19 @@ std::map<std::string, Synthetic> synthetic_checks() {
                         return synthetic_run(s, 1.0, 1e-3, [=](double t) { return Vec3(0.5 * a_in * t * t * down); }, upright);
                     },
                     {false}, "sliding acceleration", a_in, 1e-9, "pass"};
+    // Newmark: 0.8 g for 0.3 s at μ = 0.6 (0.1 ms edges) slides 0.11772 m against the ground (−x) by the
+    // sharp pulse's closed form; built 0.5 % further: pass at 1 % (rigid)
+    c["newmark"] = {[] { return shipped("earthquake/block_pulse_slide"); },
+                    [](const Scene& s) {
+                        const double a = 0.2 * 9.81, v = a * 0.3, b = 0.6 * 9.81;
+                        return synthetic_run(s, 1.0, 1e-3, [=](double t) {
+                            const double x = t < 0.2 ? 0.0
+                                             : t < 0.5 ? 0.5 * a * (t - 0.2) * (t - 0.2)
+                                             : 0.5 * a * 0.09 + v * std::min(t - 0.5, v / b) - 0.5 * b * std::pow(std::min(t - 0.5, v / b), 2);
+                            return Vec3(-1.005 * x, 0, 0);
+                        }, upright);
+                    },
+                    {false}, "final slide", 1.005 * 0.11772, 1e-6, "pass"};
     // (d) two quarter turns while on the slope: two faces crossed (at least one is the bound)
     c["rolling"] = {[] { return shipped("paper/rolling"); },
                     [](const Scene& s) { return synthetic_run(s, 2.0, 1e-3, still, [](double t) { return -0.55 * M_PI * t; }); },
