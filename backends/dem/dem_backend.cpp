@@ -9,6 +9,7 @@
 #include "geometry/hexahedron.hpp"
 #include "deformable/deformable_body.hpp"
 #include "mesh.hpp"
+#include "sudden_loads.hpp"
 #include "world.hpp"
 
 namespace cairn {
@@ -143,6 +144,16 @@ public:
                         "raise run.contact_margin or lower run.contact_interval");
         n.push_back(std::string("contact damping: ") + to_string(scene_.contact.damping_rule) + " " +
                     num(scene_.contact.damping));
+        const bool undamped = scene_.contact.damping_rule == ContactDampingRule::none || !(scene_.contact.damping > 0.0);
+        // the contact springs' period 2π/ω is π times their critical step 2/ω
+        if (const auto sudden = undamped ? dem::first_sudden_load(scene_, M_PI * contact_critical_) : std::nullopt) {
+            const LoadDef& l = scene_.loads.at(size_t(sudden->load));
+            n.push_back("warning: undamped contact, and a load on block " + scene_.blocks.at(size_t(l.block)).name +
+                        (l.body ? " (ground motion)" : "") + " changes faster than the contact springs' period (" +
+                        num(M_PI * contact_critical_) + " s) at t = " + num(sudden->time) +
+                        " s: the springs ring without end after it, and the ringing can ratchet a block along "
+                        "below friction; contact.damping_ratio = 0.05 lets it die out (docs/dem.md, Holding under loads)");
+        }
         return n;
     }
 
