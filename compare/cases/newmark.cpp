@@ -117,25 +117,41 @@ CaseAnalysis analyse_newmark(const Scene& scene, const std::vector<Sample>& s, C
     for (size_t i = 0; i < h.t.size(); i += 10) peak = std::max(peak, Vec2(f(h.t[i]).x(), f(h.t[i]).y()).norm());
     const bool springs = contact.penalty && contact.point_springs && scene.contact.ks > 0.0;
     if (slide > 0.0) {
-        const double measured = r.measured.y.back();
-        double tol = 0.01;
-        std::string why = "the oracle's own error is below 1e-5 of the slide; 1 %: the engines' contact and step";
+        const Vec2 e2(e.x(), e.y());
+        double peak_ref = 0.0;
+        for (const Vec2& x : h.x) peak_ref = std::max(peak_ref, std::abs(x.dot(e2)));
+        const double peak_run = std::max(std::abs(max_value(r.measured)), std::abs(min_value(r.measured)));
+        // a record moves the block both ways and its final place is the difference: both the
+        // largest and the final slide are judged on the scale of the largest
+        double allowance = 0.01 * peak_ref;
+        std::string why = "1 % of the largest slide (the oracle's own error is below 1e-4 of it): the engines' contact "
+                          "and step";
         if (springs) {
-            // the shear springs take up friction within ~1/ω of each onset, while the block runs
-            // ahead at up to f/ω: the penalty slide exceeds the rigid one by about (f/ω)·t_slide
-            // (measured 1.15–1.2 × on a 0.4 m cube under a 0.8 g step at kn 1e8 and 1e9)
+            // a penalty block moves by its shear springs' stretch (up to μ·m·g/(ks·A)) before it
+            // slides, and where the drive jumps faster than the springs follow (J, its change
+            // within one period 2π/ω, ω = √(ks·A/m)) it runs ahead at up to J/ω until it stops:
+            // (J/ω)·t_slide (measured 1.15–1.2 × on a 0.4 m cube under a 0.8 g step at kn 1e8 and 1e9)
             const double w = std::sqrt(scene.contact.ks * contact_area(scene) / m);
-            const double ahead = 2.0 * peak / w * h.slide_time;
-            tol = 0.01 + ahead / slide;
-            char buf[400];
+            const double stretch = scene.contact.friction * m * gravity(scene) / (scene.contact.ks * contact_area(scene));
+            const size_t lag = std::max<size_t>(1, size_t(std::lround(2.0 * M_PI / w / (h.t[1] - h.t[0]))));
+            double jump = 0.0;
+            for (size_t i = 0; i + lag < h.t.size(); ++i) {
+                const Vec3 d0 = f(h.t[i]), d1 = f(h.t[i + lag]);
+                jump = std::max(jump, Vec2(d1.x() - d0.x(), d1.y() - d0.y()).norm());
+            }
+            const double ahead = 2.0 * jump / w * h.slide_time;
+            allowance += stretch + ahead;
+            char buf[500];
             std::snprintf(buf, sizeof buf,
-                          "1 %% plus the shear springs' onset run-ahead 2·(f/ω)·t_slide = %.3g m (f = %.3g m/s², "
-                          "ω = √(ks·A/m) = %.4g rad/s, t_slide = %.3g s): a penalty contact slides further by "
-                          "about (f/ω)·t_slide and converges to the rigid block as ks grows",
-                          ahead, peak, w, h.slide_time);
+                          "1 %% of the largest slide, plus the shear springs' stretch μmg/(ks·A) = %.3g m and their "
+                          "run-ahead 2·(J/ω)·t_slide = %.3g m (J = %.3g m/s², the drive's largest change within "
+                          "2π/ω; ω = √(ks·A/m) = %.4g rad/s; t_slide = %.3g s): a penalty contact converges to the "
+                          "rigid block as ks grows",
+                          stretch, ahead, jump, w, h.slide_time);
             why = buf;
         }
-        r.metrics.push_back(relative("final slide", "m", measured, h.x.back().dot(Vec2(e.x(), e.y())), tol, why));
+        r.metrics.push_back(absolute("largest slide", "m", peak_run, peak_ref, allowance, why));
+        r.metrics.push_back(absolute("final slide", "m", r.measured.y.back(), h.x.back().dot(e2), allowance, why));
         r.metrics.push_back(info("sliding time", "s", h.slide_time, NAN,
                                  "the oracle's time spent sliding, over " + std::to_string(h.onsets) + " episode(s)"));
         const auto half = crossings(r.measured, 0.5 * slide, Crossing::up);

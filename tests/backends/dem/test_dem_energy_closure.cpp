@@ -111,6 +111,12 @@ TEST_CASE("a rigid column closes the energy balance under El Centro", "[dem][ene
     check_closes({"earthquake/column_elcentro"}, {"paper", "overlap"}, "rigid");
 }
 
+TEST_CASE("a block under ground pulses closes the energy balance, rigid and deformable", "[dem][energy]") {
+    // a pulse beyond friction (the slide's friction work) and one below it (the onset's slip)
+    for (const char* model : {"rigid", "deformable"})
+        check_closes({"earthquake/block_pulse_slide", "earthquake/block_pulse_hold"}, {"paper", "overlap"}, model);
+}
+
 TEST_CASE("a rigid column closes the energy balance under a pushover", "[dem][energy]") {
     check_closes({"structures/column_pushover"}, {"paper", "overlap"}, "rigid");
 }

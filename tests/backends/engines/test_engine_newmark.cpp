@@ -33,8 +33,8 @@ std::vector<Sample> run(const std::string& engine, const Scene& scene) {
     return out;
 }
 
-/// the judged metrics of the newmark analysis of `scene` on `engine`, each checked
-void judge(const std::string& engine, const Scene& scene) {
+/// the judged metrics of the newmark analysis of `scene` on `engine` (`count` of them), each checked
+void judge(const std::string& engine, const Scene& scene, int count) {
     const bool dem = engine == "dem";
     const auto a = cases::analyse_case(scene, run(engine, scene), {dem, dem});
     int judged = 0;
@@ -44,7 +44,7 @@ void judge(const std::string& engine, const Scene& scene) {
         INFO(m.name << ": " << m.value << " against " << m.reference << " (" << m.tolerance_text() << "; " << m.basis << ")");
         CHECK(m.pass());
     }
-    CHECK(judged == 1);
+    CHECK(judged == count);
 }
 
 /// dem's final slide less Newmark's, m
@@ -62,8 +62,8 @@ TEST_CASE("every backend: a ground pulse beyond friction slides Newmark's distan
     const std::string engine = GENERATE(from_range(all_backend_names()));
     CAPTURE(engine);
     // 0.11772 m; rigid contact within 1 % (measured +0.03 %), dem within 1 % plus its shear
-    // springs' onset run-ahead (measured +3.0 % at kn = 1e9)
-    judge(engine, shipped("block_pulse_slide"));
+    // springs' stretch and onset run-ahead (measured +3.0 % at kn = 1e9, allowed 6.5 %)
+    judge(engine, shipped("block_pulse_slide"), 2);   // the largest and the final slide
 }
 
 TEST_CASE("every backend: a ground pulse below friction leaves the block held after its onset", "[engines][newmark]") {
@@ -71,7 +71,7 @@ TEST_CASE("every backend: a ground pulse below friction leaves the block held af
     CAPTURE(engine);
     // drift over the second half within 5 % of the elastic base shear 4.6 µm (dem's contact
     // damping ζ = 0.05 lets the onset's ringing die out; measured 2e-8 m)
-    judge(engine, shipped("block_pulse_hold"));
+    judge(engine, shipped("block_pulse_hold"), 1);   // the drift
 }
 
 TEST_CASE("dem: the penalty slide converges to Newmark's as the shear springs stiffen, as 1/√ks", "[engines][newmark]") {
