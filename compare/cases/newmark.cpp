@@ -73,12 +73,16 @@ metrics::Series along(const Scene& scene, const std::vector<Sample>& s, const Ve
     return out;
 }
 
-std::vector<double> newmark_curve(const Scene& scene, ContactKind, const std::vector<double>& t) {
-    const auto h = oracle_run(scene);
-    const Vec3 e = judged_direction(scene, h);
+/// the oracle's displacement along `e` at the times `t`, m
+std::vector<double> along_oracle(const oracle::SlidingHistory& h, const Vec3& e, const std::vector<double>& t) {
     std::vector<double> out;
     for (double x : t) out.push_back(h.at(x).dot(Vec2(e.x(), e.y())));
     return out;
+}
+
+std::vector<double> newmark_curve(const Scene& scene, ContactKind, const std::vector<double>& t) {
+    const auto h = oracle_run(scene);
+    return along_oracle(h, judged_direction(scene, h), t);
 }
 
 /// the least of the block's half-widths along x and y over the height of its centre of mass above
@@ -101,7 +105,7 @@ CaseAnalysis analyse_newmark(const Scene& scene, const std::vector<Sample>& s, C
     CaseAnalysis r;
     r.measured = along(scene, s, e);
     r.quantity = "displacement of A's centre of mass along the base, m";
-    r.analytic = newmark_curve(scene, contact, r.measured.t);
+    r.analytic = along_oracle(h, e, r.measured.t);
     r.analytic_label = "Newmark's rigid sliding block, μ·(g − f_z)";
     r.analytic_key = "Newmark block";
     const double rock = rocking_ratio(scene);
