@@ -57,7 +57,6 @@ SlidingHistory newmark_slide(const std::function<Vec3(double)>& drive, double g,
             // friction gives way: slide off along the drive's excess over the disk
             held = false;
             ++out.onsets;
-            v = Vec2::Zero();
             const Vec2 a = f - cap * f.normalized();
             const Vec2 v1 = a * dt;
             x += 0.5 * v1 * dt;
@@ -85,7 +84,7 @@ SlidingHistory newmark_slide(const std::function<Vec3(double)>& drive, double g,
             Vec2 f;
             double cap;
             load(t1, &f, &cap);
-            if (f.norm() > cap) {
+            if (f.norm() > cap && s < 1.0) {   // (at s = 1 the next step's check starts it)
                 held = false;
                 ++out.onsets;
                 v = (f - cap * f.normalized()) * (1.0 - s) * dt;
