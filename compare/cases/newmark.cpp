@@ -49,20 +49,30 @@ oracle::SlidingHistory oracle_run(const Scene& scene) {
     return oracle::newmark_slide(drive(scene), gravity(scene), scene.contact.friction, scene.run.duration);
 }
 
-/// the horizontal unit direction the block is judged along: that of the oracle's final slide, or
-/// of the largest drive when it holds
-Vec3 judged_direction(const Scene& scene, const oracle::SlidingHistory& h) {
-    const Vec2 end = h.x.back();
-    if (end.norm() > 0.0) return Vec3(end.x(), end.y(), 0.0).normalized();
+/// the largest horizontal drive per unit mass (m/s²) and its unit direction (x when there is none),
+/// sampled every 10 steps of the oracle's grid
+struct LargestDrive {
+    double size = 0.0;
+    Vec2 dir = Vec2::UnitX();
+};
+
+LargestDrive largest_drive(const Scene& scene, const oracle::SlidingHistory& h) {
     const auto f = drive(scene);
-    Vec2 best = Vec2::UnitX();
-    double peak = 0.0;
+    LargestDrive out;
     for (size_t i = 0; i < h.t.size(); i += 10) {
         const Vec3 d = f(h.t[i]);
         const Vec2 fh(d.x(), d.y());
-        if (fh.norm() > peak) peak = fh.norm(), best = fh.normalized();
+        if (fh.norm() > out.size) out.size = fh.norm(), out.dir = fh.normalized();
     }
-    return Vec3(best.x(), best.y(), 0.0);
+    return out;
+}
+
+/// the horizontal unit direction the block is judged along: that of the oracle's final slide, or
+/// of the largest drive when it holds
+Vec3 judged_direction(const oracle::SlidingHistory& h, const LargestDrive& largest) {
+    const Vec2 end = h.x.back();
+    const Vec2 dir = end.norm() > 0.0 ? Vec2(end.normalized()) : largest.dir;
+    return Vec3(dir.x(), dir.y(), 0.0);
 }
 
 /// the reference block's centre of mass moved along `e` since the first sample, m
@@ -82,7 +92,7 @@ std::vector<double> along_oracle(const oracle::SlidingHistory& h, const Vec3& e,
 
 std::vector<double> newmark_curve(const Scene& scene, ContactKind, const std::vector<double>& t) {
     const auto h = oracle_run(scene);
-    return along_oracle(h, judged_direction(scene, h), t);
+    return along_oracle(h, judged_direction(h, largest_drive(scene, h)), t);
 }
 
 /// the least of the block's half-widths along x and y over the height of its centre of mass above
@@ -99,7 +109,8 @@ double rocking_ratio(const Scene& scene) {
 CaseAnalysis analyse_newmark(const Scene& scene, const std::vector<Sample>& s, ContactKind contact) {
     using namespace metrics;
     const auto h = oracle_run(scene);
-    const Vec3 e = judged_direction(scene, h);
+    const LargestDrive largest = largest_drive(scene, h);
+    const Vec3 e = judged_direction(h, largest);
     const int a = scene.reference->block;
     const double m = block_mass(scene, a), T = s.back().t;
     CaseAnalysis r;
@@ -115,16 +126,13 @@ CaseAnalysis analyse_newmark(const Scene& scene, const std::vector<Sample>& s, C
                   "sliding: it is valid while this stays below b/h = %.4g (a rigid block's rocking threshold)", rock);
     r.metrics.push_back(info("friction demand", "-", h.peak_ratio, scene.contact.friction, basis));
     const double slide = h.x.back().norm();
-    // the largest horizontal drive per unit mass, m/s²
-    double peak = 0.0;
-    const auto f = drive(scene);
-    for (size_t i = 0; i < h.t.size(); i += 10) peak = std::max(peak, Vec2(f(h.t[i]).x(), f(h.t[i]).y()).norm());
+    // the run's largest displacement along e, either way, m
+    const double moved_most = std::max(std::abs(max_value(r.measured)), std::abs(min_value(r.measured)));
     const bool springs = contact.penalty && contact.point_springs && scene.contact.ks > 0.0;
     if (slide > 0.0) {
         const Vec2 e2(e.x(), e.y());
         double peak_ref = 0.0;
         for (const Vec2& x : h.x) peak_ref = std::max(peak_ref, std::abs(x.dot(e2)));
-        const double peak_run = std::max(std::abs(max_value(r.measured)), std::abs(min_value(r.measured)));
         // a record moves the block both ways and its final place is the difference: both the
         // largest and the final slide are judged on the scale of the largest
         double allowance = 0.01 * peak_ref;
@@ -138,6 +146,7 @@ CaseAnalysis analyse_newmark(const Scene& scene, const std::vector<Sample>& s, C
             const double w = std::sqrt(scene.contact.ks * contact_area(scene) / m);
             const double stretch = scene.contact.friction * m * gravity(scene) / (scene.contact.ks * contact_area(scene));
             const size_t lag = std::max<size_t>(1, size_t(std::lround(2.0 * M_PI / w / (h.t[1] - h.t[0]))));
+            const auto f = drive(scene);
             double jump = 0.0;
             for (size_t i = 0; i + lag < h.t.size(); ++i) {
                 const Vec3 d0 = f(h.t[i]), d1 = f(h.t[i + lag]);
@@ -154,7 +163,7 @@ CaseAnalysis analyse_newmark(const Scene& scene, const std::vector<Sample>& s, C
                           stretch, ahead, jump, w, h.slide_time);
             why = buf;
         }
-        r.metrics.push_back(absolute("largest slide", "m", peak_run, peak_ref, allowance, why));
+        r.metrics.push_back(absolute("largest slide", "m", moved_most, peak_ref, allowance, why));
         r.metrics.push_back(absolute("final slide", "m", r.measured.y.back(), h.x.back().dot(e2), allowance, why));
         r.metrics.push_back(info("sliding time", "s", h.slide_time, NAN,
                                  "the oracle's time spent sliding, over " + std::to_string(h.onsets) + " episode(s)"));
@@ -164,11 +173,10 @@ CaseAnalysis analyse_newmark(const Scene& scene, const std::vector<Sample>& s, C
     }
     // holds: no progressive slip over the second half of the run, against the elastic base shear
     // of the largest drive
-    const double elastic = scene.contact.ks > 0.0 ? m * peak / (scene.contact.ks * contact_area(scene)) : 0.0;
+    const double elastic = scene.contact.ks > 0.0 ? m * largest.size / (scene.contact.ks * contact_area(scene)) : 0.0;
     const double scale = elastic > 0.0 ? elastic : 1e-6;
     const double drift = polyfit(r.measured, 1, 0.5 * T, T)[1] * 0.5 * T;
-    const double largest = std::max(std::abs(max_value(r.measured)), std::abs(min_value(r.measured)));
-    r.metrics.push_back(info("largest displacement", "m", largest, elastic,
+    r.metrics.push_back(info("largest displacement", "m", moved_most, elastic,
                              "elastic base shear m·f/(ks·A) of the largest drive as reference; a load that comes "
                              "suddenly on elastic springs slips once at its onset"));
     char why[300];
