@@ -33,7 +33,9 @@ std::string metric_brief(const metrics::Metric& m) {
     if (m.check == metrics::Check::relative)
         return m.name + " " + number_text(m.value) + " " + m.unit + " vs " + number_text(m.reference) + " (" + percent_text(m.relative_error()) +
                ", tol " + m.tolerance_text() + ")";
-    return m.name + " " + number_text(m.value) + " " + m.unit + " (" + m.tolerance_text() + " " + number_text(m.reference) + ")";
+    const std::string value = m.name + " " + number_text(m.value) + " " + m.unit;
+    if (!m.has_reference) return value + " (" + m.tolerance_text() + ")";
+    return value + " vs " + number_text(m.reference) + " " + m.unit + " (" + m.tolerance_text() + ")";
 }
 
 }  // namespace

@@ -20,3 +20,21 @@ TEST_CASE("the validation report has a table of contents with links to its secti
     CHECK(html.find("<a href=\"#verdict\">Verdict</a>") != std::string::npos);
     CHECK(html.find("id=\"verdict\"") != std::string::npos);
 }
+
+TEST_CASE("a run's worst metric reads value vs reference and the tolerance, for every kind of check", "[report]") {
+    validation::CaseRun r;
+    r.outcome = Outcome::completed;
+    r.analysed = true;
+    SECTION("absolute: the reference appears once, after vs") {
+        r.analysis.metrics = {metrics::absolute("slip while held", "m", 4.2e-6, 0.0, 1.26e-7, "")};
+        CHECK(worst_metric_text(r) == "slip while held 4.2e-06 m vs 0 m (± 1.26e-07 m)");
+    }
+    SECTION("an upper bound") {
+        r.analysis.metrics = {metrics::at_most("drift", "m", 2.0, 1.0, 0.5, "")};
+        CHECK(worst_metric_text(r) == "drift 2 m vs 1 m (≤ ref + 0.5 m)");
+    }
+    SECTION("relative") {
+        r.analysis.metrics = {metrics::relative("period", "s", 1.01, 1.0, 0.02, "")};
+        CHECK(worst_metric_text(r) == "period 1.01 s vs 1 (+1.000 %, tol 2 %)");
+    }
+}
