@@ -30,7 +30,7 @@ std::string summary_line(const JobOutcome& o) {
                   "(max %.2g of the energy scale%s)",
                   to_string(o.status), o.steps, o.dt, o.wall_seconds, o.final_balance_error,
                   o.max_balance_error, o.energy_drift ? ", drift flagged" : "");
-    return buf;
+    return o.energy_created.empty() ? std::string(buf) : std::string(buf) + "; " + o.energy_created;
 }
 
 namespace {
@@ -107,6 +107,7 @@ JobOutcome execute_run(const RunJob& job) {
     o.wall_seconds = result.wall_seconds;
     o.energy_drift = result.energy_drift;
     o.max_balance_error = result.max_balance_error;
+    o.energy_created = energy_created_text(result);
     if (result.sample_count > 0) o.final_balance_error = result.final_energy.total() - result.initial_total;
     return o;
 }

@@ -41,6 +41,7 @@ struct JobOutcome {
     double final_balance_error = 0.0; ///< J, last sample's total energy minus the first's
     bool energy_drift = false;        ///< the balance error passed the drift bound
     double max_balance_error = 0.0;   ///< largest balance error relative to the energy scale
+    std::string energy_created;       ///< energy_created_text of the run: empty unless energy appeared from nowhere
 };
 
 /// run `job`: the outputs appear in job.out_dir as a set (output/staged_dir.hpp) or not at all;

@@ -42,6 +42,8 @@ void take_result(CaseRun& run, const Scene& scene, JobResult& r) {
     run.wall_seconds = r.result.wall_seconds;
     run.dt = r.result.dt;
     run.steps = r.result.steps;
+    run.energy_gain = r.result.energy_gain;
+    run.energy_created = energy_created_text(r.result);
     try {
         if (run.samples.size() >= 3 && scene.reference) {   // a scene without a reference has nothing to judge
             run.analysis = cases::analyse_case(scene, run.samples, contact_kind(run.variant, scene));

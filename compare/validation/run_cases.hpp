@@ -24,6 +24,8 @@ struct CaseRun {
     Variant variant;
     Outcome outcome = Outcome::failed;
     std::string message;              ///< why it was refused, failed or went unstable
+    double energy_gain = 0.0;         ///< J, RunResult::energy_gain: energy that appeared without a source
+    std::string energy_created;       ///< energy_created_text of the run (empty unless flagged)
     std::vector<Sample> samples;      ///< what it produced (partial when unstable)
     double wall_seconds = 0.0;        ///< s, the stepping loop
     double dt = 0.0;                  ///< s

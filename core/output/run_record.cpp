@@ -47,6 +47,9 @@ nlohmann::json run_record(const Scene& scene, const Backend& backend, const RunR
     j["partial"] = result.status != RunStatus::completed;
     j["energy_drift"] = result.energy_drift;
     j["max_balance_error"] = result.max_balance_error;
+    j["energy_gain"] = result.energy_gain;
+    j["energy_gain_time"] = result.energy_gain_time;
+    j["energy_created"] = result.energy_created;
     if (result.sample_count > 0) {
         j["final_time"] = result.final_time;
         j["final_energies"] = energies_json(result.final_energy, result.initial_total);

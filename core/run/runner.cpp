@@ -49,6 +49,14 @@ std::string unstable_message(double t, const std::string& why, double dt, double
 
 }  // namespace
 
+std::string energy_created_text(const RunResult& r) {
+    if (!r.energy_created) return {};
+    return "energy appeared from nowhere: +" + number_format("%.3g", r.energy_gain) + " J by t = " +
+           number_format("%.6g", r.energy_gain_time) + " s (" +
+           number_format("%.2g", r.energy_gain / r.energy_gain_scale) + " × the motion's energy, " +
+           number_format("%.3g", r.energy_gain_scale) + " J)";
+}
+
 RunResult run_scene(Backend& backend, const Scene& scene, const RunOptions& options, SampleSink& sink,
                     const ProgressFn& progress) {
     backend.build(scene, options);
@@ -61,6 +69,7 @@ RunResult run_scene(Backend& backend, const Scene& scene, const RunOptions& opti
     const long long total_steps = size.steps;
 
     EnergyScale energy_scale(scene);
+    double lowest_error = 0.0;   // J, the lowest balance error so far
 
     // check one sample; returns the reason if the run must stop
     auto check = [&](const Sample& s) -> std::string {
@@ -71,6 +80,13 @@ RunResult run_scene(Backend& backend, const Scene& scene, const RunOptions& opti
         const double err = e.total() - r.initial_total;
         r.max_balance_error = std::max(r.max_balance_error, std::abs(err) / scale.motion);
         if (std::abs(err) > kDriftBound * scale.motion) r.energy_drift = true;
+        lowest_error = std::min(lowest_error, err);
+        if (err - lowest_error > r.energy_gain) {
+            r.energy_gain = err - lowest_error;
+            r.energy_gain_time = s.t;
+            r.energy_gain_scale = scale.motion;
+        }
+        if (err - lowest_error > kCreatedBound * scale.motion) r.energy_created = true;
         if (err > kGrowthBound * scale.growth)
             return "energy growing without a source (balance error " + number_format("%.3g", err) +
                    " J against an energy scale of " + number_format("%.3g", scale.growth) + " J)";

@@ -17,6 +17,12 @@ namespace cairn {
 /// RunResult::energy_drift (the run goes on): 1 %
 constexpr double kDriftBound = 0.01;
 
+/// energy appearing without a source: a rise of the balance error above its lowest value so far by
+/// more than this fraction of the motion's energy sets RunResult::energy_created (the run goes on):
+/// 10 %. Measured from the lowest value, a gain shows even after losses a backend does not book
+/// (the rigid engines' impacts), which would otherwise hide it in the balance error
+constexpr double kCreatedBound = 0.1;
+
 /// How a run ended: every step taken, stopped because it went unstable, or stopped on request.
 enum class RunStatus { completed, unstable, interrupted };
 
@@ -37,7 +43,16 @@ struct RunResult {
     double wall_seconds = 0.0;       ///< wall time of the stepping loop, s
     bool energy_drift = false;       ///< balance error exceeded kDriftBound at some sample
     double max_balance_error = 0.0;  ///< largest |balance error| relative to the energy scale
+    double energy_gain = 0.0;        ///< J, the largest rise of the balance error above its lowest
+                                     ///< value at an earlier sample: energy that appeared from nowhere
+    double energy_gain_time = 0.0;   ///< s, the sample at which that rise was reached
+    double energy_gain_scale = 0.0;  ///< J, the motion's energy that rise was judged against
+    bool energy_created = false;     ///< the rise passed kCreatedBound of the motion's energy
 };
+
+/// "energy appeared from nowhere: +130 J by t = 2.205 s (26 × the motion's energy, 5.0 J)" when
+/// the run set energy_created, else empty
+std::string energy_created_text(const RunResult& r);
 
 /// called now and then with the fraction done, for a progress line on a terminal
 using ProgressFn = std::function<void(double fraction)>;

@@ -39,6 +39,8 @@ TEST_CASE("the run record holds the scene, versions, parameters and outcome", "[
     CHECK(j["energy_drift"] == false);
     CHECK(j.contains("wall_seconds"));
     CHECK(j.contains("max_balance_error"));
+    CHECK(j["energy_gain"] == result.energy_gain);
+    CHECK(j["energy_created"] == false);
     CHECK(j["final_time"] == result.samples.back().t);
     CHECK(j["final_energies"]["kinetic"] == result.samples.back().energy.kinetic);
     CHECK(j["notes"].is_array());

@@ -18,7 +18,10 @@ struct Faults {
     long long nan_from_step = -1;       ///< positions become NaN from this step on
     long long unstable_at_step = -1;    ///< step() reports unstable at this step
     double growth_rate = 0.0;           ///< kinetic energy gains 1e-3 J·(exp(rate·step) - 1)
-    double drift_per_second = 0.0;      ///< dissipated energy gains this many J per second
+    double drift_per_second = 0.0;      ///< dissipated energy gains this many J per second (< 0: losses
+                                        ///< the backend does not book, as a rigid engine's impacts)
+    long long jump_at_step = -1;        ///< from this step on, kinetic energy has jump_energy more
+    double jump_energy = 0.0;           ///< J, energy created at jump_at_step
 };
 
 /// Ballistic flight of the first free block of the scene (a point mass of that block's mass).
@@ -61,6 +64,7 @@ public:
         for (const auto& p : scene_->probes) s.probes.push_back(st.position + p.point);
         s.energy.kinetic = 0.5 * mass_ * st.velocity.squaredNorm() +
                            1e-3 * (std::exp(faults_.growth_rate * double(step_)) - 1.0);
+        if (faults_.jump_at_step >= 0 && step_ >= faults_.jump_at_step) s.energy.kinetic += faults_.jump_energy;
         s.energy.potential = -mass_ * scene_->gravity.dot(st.position);
         s.energy.dissipated = faults_.drift_per_second * t;
         return s;

@@ -132,3 +132,42 @@ TEST_CASE("slow drift is flagged but the run completes", "[runner]") {
     CHECK(r.max_balance_error > 0.01);
     CHECK(r.max_balance_error < 0.05);
 }
+
+TEST_CASE("energy appearing after losses the backend does not book is named with its time", "[runner]") {
+    Scene scene = ballistic_scene();
+    Faults f;
+    f.drift_per_second = -2.0;   // unbooked losses: the balance error falls to -0.1 J by t = 0.05 s
+    f.jump_at_step = 50;         // then 3 J appear at t = 0.05 s: a rise of 3 J from that lowest value
+    f.jump_energy = 3.0;
+    FakeBackend backend(f);
+    const RunResult r = run_scene(backend, scene, {});
+    CHECK(r.status == RunStatus::completed);
+    // the flight's motion energy is ~7-9 J (5 J kinetic at start, ~2 J of potential exchanged):
+    // 3 J is over a third of it, well beyond the 10 % bar
+    CHECK(r.energy_created);
+    // the rise from the lowest error (-0.1 J at 0.04 s) to 0.05 s: 3 J + 0.02 J of losses in between undone
+    CHECK(r.energy_gain == Approx(3.0 - 2.0 * 0.01).margin(1e-9));
+    CHECK(r.energy_gain_time == Approx(0.05));
+    CHECK_THAT(energy_created_text(r), Contains("energy appeared from nowhere") && Contains("t = 0.05 s"));
+}
+
+TEST_CASE("unbooked losses and a slow drift are no energy created", "[runner]") {
+    Scene scene = ballistic_scene();
+    Faults f;
+    SECTION("losses only: the balance error only falls") {
+        f.drift_per_second = -20.0;
+        FakeBackend backend(f);
+        const RunResult r = run_scene(backend, scene, {});
+        CHECK_FALSE(r.energy_created);
+        CHECK(r.energy_gain < 1e-12);
+        CHECK(energy_created_text(r).empty());
+    }
+    SECTION("a gain of 2-3 % of the motion's energy is drift, below the 10 % bar") {
+        f.drift_per_second = 2.0;
+        FakeBackend backend(f);
+        const RunResult r = run_scene(backend, scene, {});
+        CHECK(r.energy_drift);
+        CHECK_FALSE(r.energy_created);
+        CHECK(r.energy_gain == Approx(0.2).margin(1e-9));
+    }
+}
