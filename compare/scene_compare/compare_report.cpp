@@ -248,7 +248,7 @@ report::Document write_compare_report(const CaseResult& result, const CompareCon
                 "contact + strain + dissipated − work) minus its value at t = 0; the largest balance error is its largest "
                 "magnitude during the run; the largest gain is its largest rise above its lowest earlier value: energy "
                 "that appeared without a source (losses a backend does not book, such as the rigid engines' impacts, "
-                "lower the balance error and are no gain). A gain beyond 10 % of the motion's energy is named in the "
+                "lower the balance error and are no gain). A gain beyond 10 % of the motion's energy (at least of the heaviest block's m·g·diameter) is named in the "
                 "variant's note above. Histories in data/<variant>_energy.csv.");
     report::Table en{{"variant", "kinetic (J)", "potential change (J)", "contact (J)", "strain (J)", "dissipated (J)",
                       "work by loads (J)", "balance error (J)", "largest balance error (J)", "largest gain (J)"},

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <vector>
 
 #include "geometry/hexahedron.hpp"
 
@@ -12,10 +13,10 @@ namespace {
 /// the energy scale never falls below this, J (keeps the bounds meaningful for a scene at rest)
 constexpr double kMinScale = 1.0;
 
-/// Σ over free blocks of m·g·(block diameter): the energy a block can trade with gravity, J
-double gravity_reach(const Scene& scene) {
+/// m·g·(block diameter) of each free block: the energy a block can trade with gravity, J
+std::vector<double> gravity_reaches(const Scene& scene) {
     const double g = scene.gravity.norm();
-    double sum = 0.0;
+    std::vector<double> reach;
     for (const auto& b : scene.blocks) {
         if (b.fixed) continue;
         const double density = (b.material >= 0 && b.material < int(scene.materials.size()))
@@ -24,14 +25,19 @@ double gravity_reach(const Scene& scene) {
         double diameter = 0.0;
         for (const auto& p : b.corners)
             for (const auto& q : b.corners) diameter = std::max(diameter, (p - q).norm());
-        sum += mass_properties(b.corners, density).mass * g * diameter;
+        reach.push_back(mass_properties(b.corners, density).mass * g * diameter);
     }
-    return sum;
+    return reach;
 }
 
 }  // namespace
 
-EnergyScale::EnergyScale(const Scene& scene) : gravity_reach_(gravity_reach(scene)) {}
+EnergyScale::EnergyScale(const Scene& scene) {
+    for (double r : gravity_reaches(scene)) {
+        gravity_reach_ += r;
+        block_reach_ = std::max(block_reach_, r);
+    }
+}
 
 EnergyBounds EnergyScale::add(const Energies& e) {
     const double motion = std::abs(e.kinetic) + std::abs(e.contact) + std::abs(e.strain);
@@ -46,6 +52,7 @@ EnergyBounds EnergyScale::add(const Energies& e) {
     EnergyBounds b;
     b.motion = std::max(kMinScale, motion_max_ + std::abs(e.external) + (potential_max_ - potential_min_));
     b.growth = std::max(kMinScale, initial_motion_ + work_max_ + (potential_first_ - potential_min_)) + gravity_reach_;
+    b.created = std::max(b.motion, block_reach_);
     motion_max_ = std::max(motion_max_, motion);
     return b;
 }

@@ -20,6 +20,11 @@ struct EnergyBounds {
     /// leaves out the motion seen so far: energy created by an unstable step would otherwise
     /// raise the bar it is measured against (a block launched by the step, then flying)
     double growth = 0.0;
+    /// the bar for energy that appears without a source (RunResult::energy_created): the larger of
+    /// `motion` and the largest m·g·(diameter) of one free block. A burst that could lift the
+    /// heaviest block by a tenth of its size is seen in a structure at rest, while the settling of a
+    /// rigid engine's contacts (a block pushed out of the millimetre it sank) is not
+    double created = 0.0;
 };
 
 /// Running summaries of a run's energies.
@@ -33,7 +38,8 @@ public:
     EnergyBounds add(const Energies& e);
 
 private:
-    double gravity_reach_ = 0.0;    // J
+    double gravity_reach_ = 0.0;    // J, Σ m·g·(diameter) of the free blocks
+    double block_reach_ = 0.0;      // J, the largest m·g·(diameter) of one free block
     double motion_max_ = 0.0;       // largest |kinetic| + |contact| + |strain| so far, J
     double potential_min_ = 0.0, potential_max_ = 0.0;   // J
     double initial_motion_ = 0.0;    // |kinetic| + |contact| + |strain| of the first sample, J

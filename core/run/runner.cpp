@@ -53,7 +53,7 @@ std::string energy_created_text(const RunResult& r) {
     if (!r.energy_created) return {};
     return "energy appeared from nowhere: +" + number_format("%.3g", r.energy_gain) + " J by t = " +
            number_format("%.6g", r.energy_gain_time) + " s (" +
-           number_format("%.2g", r.energy_gain / r.energy_gain_scale) + " × the motion's energy, " +
+           number_format("%.2g", r.energy_gain / r.energy_gain_scale) + " × its scale, the larger of the motion's energy and the heaviest block's m·g·diameter: " +
            number_format("%.3g", r.energy_gain_scale) + " J)";
 }
 
@@ -84,9 +84,9 @@ RunResult run_scene(Backend& backend, const Scene& scene, const RunOptions& opti
         if (err - lowest_error > r.energy_gain) {
             r.energy_gain = err - lowest_error;
             r.energy_gain_time = s.t;
-            r.energy_gain_scale = scale.motion;
+            r.energy_gain_scale = scale.created;
         }
-        if (err - lowest_error > kCreatedBound * scale.motion) r.energy_created = true;
+        if (err - lowest_error > kCreatedBound * scale.created) r.energy_created = true;
         if (err > kGrowthBound * scale.growth)
             return "energy growing without a source (balance error " + number_format("%.3g", err) +
                    " J against an energy scale of " + number_format("%.3g", scale.growth) + " J)";

@@ -68,3 +68,16 @@ TEST_CASE("the growth bar counts the run's sources, not the motion energy create
     // the largest |work| so far stays in the bar when the work swings back
     CHECK(scale.add(energies(0.0, 11000.0, 0.0, 5.0)).growth == Approx(100.0 + 30.0 + 1000.0 + reach));
 }
+
+TEST_CASE("the bar for energy created is the motion's energy, at least the heaviest block's m·g·diameter", "[runner][energy]") {
+    Scene s = cube_scene();
+    add_box(s, "C", Vec3(0.5, 0.5, 0.5), Vec3(0, 0, 1.25), false);   // a lighter free block: 1/8 of the mass, half the size
+    EnergyScale scale(s);
+    const double heaviest = 2600.0 * 9.81 * std::sqrt(3.0);             // the 1 m cube's, not the sum with C's
+    auto b0 = scale.add(energies(0.0, 1000.0));
+    CHECK(b0.created == Approx(heaviest));
+    // a motion holding more than that sets the bar
+    scale.add(energies(60000.0, 1000.0));
+    auto b2 = scale.add(energies(0.0, 1000.0));
+    CHECK(b2.created == Approx(60000.0));
+}
