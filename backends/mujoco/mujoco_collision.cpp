@@ -42,7 +42,7 @@ int collide(const mjModel* m, const mjData* d, mjContact* con, int g1, int g2, m
     int n = 0;
     for (const HexContact& p : points) {
         mjContact& c = con[n++];
-        c.dist = -p.depth;
+        c.dist = -p.depth * (box_box ? h->box_depth_scale : 1.0);
         // MuJoCo's normal points from geom 1 to geom 2; cairn's pushes geom 1 away from geom 2
         Vec3 normal = -p.normal;
         Vec3 t1 = normal.unitOrthogonal();

@@ -18,6 +18,9 @@ struct MujocoHexahedra {
     const mjModel* model = nullptr;            ///< the model these geoms belong to
     std::vector<const RigidBlock*> geom_block; ///< block per geom id (null: not a block)
     bool boxes = false;                        ///< true: box-box pairs through cairn's collider too
+    /// factor on the overlap a box-box pair reports as its distance: 0.5 keeps MuJoCo's own box-box
+    /// convention (half the overlap), which the rigid mode's solref was set against
+    double box_depth_scale = 1.0;
 };
 
 /// puts cairn's collider into mjCOLLISIONFUNC for box-box, box-mesh and mesh-mesh pairs (once per
