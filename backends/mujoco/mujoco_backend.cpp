@@ -407,12 +407,10 @@ PointSpring MujocoBackend::pair_spring(const mjContact& c) const {
 }
 
 double MujocoBackend::depth_scale(const mjContact& c) const {
-    // MuJoCo 2.2.2's box-box collider reports half the overlap as the contact distance (a 0.5 mm
-    // overlap gives dist = -0.25 mm; cairn's collider gives the full overlap) while the row's
-    // velocity is the full approach speed: the spring on dist needs twice the stiffness
-    const bool own_box_box = m_->geom_type[c.geom1] == mjGEOM_BOX && m_->geom_type[c.geom2] == mjGEOM_BOX &&
-                             !hexahedra_.boxes;
-    return own_box_box ? 2.0 : 1.0;
+    // the overlap over the contact distance: a box-box pair reports box_depth_scale of its overlap
+    // (rigid mode: half, MuJoCo 2.2.2's own box-box convention; matched mode: all of it)
+    const bool box_box = m_->geom_type[c.geom1] == mjGEOM_BOX && m_->geom_type[c.geom2] == mjGEOM_BOX;
+    return box_box ? 1.0 / hexahedra_.box_depth_scale : 1.0;
 }
 
 void MujocoBackend::calibrate_contacts() {
