@@ -204,9 +204,9 @@ void MujocoBackend::build(const Scene& scene, const RunOptions& options) {
     }
     install_hexahedron_collider();
     hexahedra_.model = m_;
-    // box-box pairs too, in both modes: MuJoCo 2.2.2's box-box collider gives phantom deep points
-    // for equal boxes face on face, which launched a brick of a wall at rest in rigid mode
-    hexahedra_.boxes = true;
+    // box-box pairs go through cairn's collider in both modes: MuJoCo 2.2.2's box-box collider
+    // gives phantom deep points for equal boxes face on face, which launched a brick of a wall at
+    // rest in rigid mode
     hexahedra_.box_depth_scale = matched_ ? 1.0 : 0.5;
     hexahedra_.geom_block.assign(m_->ngeom, nullptr);
     for (int g = 0; g < m_->ngeom; ++g)

@@ -36,7 +36,7 @@ int collide(const mjModel* m, const mjData* d, mjContact* con, int g1, int g2, m
     const bool mesh_mesh = m->geom_type[g1] == mjGEOM_MESH && m->geom_type[g2] == mjGEOM_MESH;
     const bool box_box = m->geom_type[g1] == mjGEOM_BOX && m->geom_type[g2] == mjGEOM_BOX;
     mjfCollision own = mesh_mesh ? g_mesh_mesh : box_box ? g_box_box : g_box_mesh;
-    if (!h || h->model != m || !h->geom_block[g1] || !h->geom_block[g2] || (box_box && !h->boxes))
+    if (!h || h->model != m || !h->geom_block[g1] || !h->geom_block[g2])
         return own(m, d, con, g1, g2, margin);
     auto points = hexahedron_contacts(corners(m, d, *h->geom_block[g1], g1), corners(m, d, *h->geom_block[g2], g2), 4);
     int n = 0;

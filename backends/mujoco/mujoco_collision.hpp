@@ -2,8 +2,8 @@
 /// MuJoCo 2.2.2's mesh collider gives one contact per pair, so a face-on-face joint of general
 /// hexahedra hinges; box-mesh and mesh-mesh pairs of a cairn model go through cairn's
 /// face-clipping collider (common/hexahedron_contact) instead, through MuJoCo's collision table.
-/// Box-box pairs go there too when the model asks (matched mode): MuJoCo's box-box collider gives
-/// duplicate and phantom deep points for two equal boxes face on face (docs/backends.md).
+/// Box-box pairs go there too: MuJoCo's box-box collider gives duplicate and phantom deep points
+/// for two equal boxes face on face (docs/backends.md).
 
 #include <mujoco/mujoco.h>
 
@@ -17,15 +17,14 @@ namespace cairn {
 struct MujocoHexahedra {
     const mjModel* model = nullptr;            ///< the model these geoms belong to
     std::vector<const RigidBlock*> geom_block; ///< block per geom id (null: not a block)
-    bool boxes = false;                        ///< true: box-box pairs through cairn's collider too
     /// factor on the overlap a box-box pair reports as its distance: 0.5 keeps MuJoCo's own box-box
     /// convention (half the overlap), which the rigid mode's solref was set against
     double box_depth_scale = 1.0;
 };
 
 /// puts cairn's collider into mjCOLLISIONFUNC for box-box, box-mesh and mesh-mesh pairs (once per
-/// process); models other than the one made current, and box-box pairs of a model without
-/// `boxes`, fall through to MuJoCo's own function
+/// process); models other than the one made current, and geoms that are not blocks, fall through
+/// to MuJoCo's own function
 void install_hexahedron_collider();
 
 /// makes `h` the model the collider serves on this thread until the returned guard goes out of scope

@@ -81,12 +81,13 @@ RunResult run_scene(Backend& backend, const Scene& scene, const RunOptions& opti
         r.max_balance_error = std::max(r.max_balance_error, std::abs(err) / scale.motion);
         if (std::abs(err) > kDriftBound * scale.motion) r.energy_drift = true;
         lowest_error = std::min(lowest_error, err);
-        if (err - lowest_error > r.energy_gain) {
-            r.energy_gain = err - lowest_error;
+        const double rise = err - lowest_error;
+        if (rise > r.energy_gain) {
+            r.energy_gain = rise;
             r.energy_gain_time = s.t;
             r.energy_gain_scale = scale.created;
         }
-        if (err - lowest_error > kCreatedBound * scale.created) r.energy_created = true;
+        if (rise > kCreatedBound * scale.created) r.energy_created = true;
         if (err > kGrowthBound * scale.growth)
             return "energy growing without a source (balance error " + number_format("%.3g", err) +
                    " J against an energy scale of " + number_format("%.3g", scale.growth) + " J)";

@@ -18,9 +18,10 @@ namespace cairn {
 constexpr double kDriftBound = 0.01;
 
 /// energy appearing without a source: a rise of the balance error above its lowest value so far by
-/// more than this fraction of EnergyBounds::created (the motion's energy, at least the heaviest free
-/// block's m·g·diameter) sets RunResult::energy_created (the run goes on): 10 %. Measured from the lowest value, a gain shows even after losses a backend does not book
-/// (the rigid engines' impacts), which would otherwise hide it in the balance error
+/// more than this fraction of EnergyBounds::created (the motion's energy, at least the heaviest
+/// free block's m·g·diameter) sets RunResult::energy_created (the run goes on): 10 %. Measured
+/// from the lowest value, a gain shows even after losses a backend does not book (the rigid
+/// engines' impacts), which would otherwise hide it in the balance error
 constexpr double kCreatedBound = 0.1;
 
 /// How a run ended: every step taken, stopped because it went unstable, or stopped on request.
@@ -47,7 +48,7 @@ struct RunResult {
                                      ///< value at an earlier sample: energy that appeared from nowhere
     double energy_gain_time = 0.0;   ///< s, the sample at which that rise was reached
     double energy_gain_scale = 0.0;  ///< J, the scale (EnergyBounds::created) that rise was judged against
-    bool energy_created = false;     ///< the rise passed kCreatedBound of the motion's energy
+    bool energy_created = false;     ///< the rise passed kCreatedBound of EnergyBounds::created
 };
 
 /// "energy appeared from nowhere: +130 J by t = 2.205 s (0.65 × its scale, …: 200 J)" when
