@@ -80,6 +80,48 @@ TEST_CASE("every backend: each interface of a matched stack of three cubes carri
     }
 }
 
+TEST_CASE("every backend: a matched cube thrown along its base stops at v^2/(2 mu g) without hopping",
+          "[engines][matched]") {
+    const std::string engine = GENERATE(from_range(matched_backend_names()));
+    CAPTURE(engine);
+    // a 0.5 m cube thrown at 1 m/s on a flat base, mu = 0.5, kn = ks = 1e10 N/m³, undamped
+    Scene s = base_scene("slide_stop");
+    s.contact.kn = s.contact.ks = 1e10;
+    s.contact.friction = 0.5;
+    const int a = add_box(s, "A", Vec3(0.5, 0.5, 0.5), Vec3(0, 0, 0.25), false);
+    add_box(s, "B", Vec3(3, 2, 0.5), Vec3(0.5, 0, -0.25), true);
+    s.blocks[a].velocity = Vec3(1, 0, 0);
+    s.run.settle = true;   // as a scene file gets by default: the springs start loaded by the weight
+    auto b = build_backend(engine, s, "matched");
+    const double stop = 1.0 / (2.0 * 0.5 * g);   // v²/(2 μ g) = 0.101937 m, reached at 0.204 s
+    const Vec3 start = b->sample().blocks[0].position;
+    double rise = 0.0;
+    const long long steps = std::llround(0.5 / b->time_step());
+    for (long long i = 0; i < steps; ++i) {
+        if (b->step() != StepStatus::ok) FAIL(engine << " unstable: " << b->failure());
+        rise = std::max(rise, b->sample().blocks[0].position.z() - start.z());
+    }
+    const double slide = b->sample().blocks[0].position.x() - start.x();
+    CAPTURE(slide, stop, (slide - stop) / stop, rise);
+    WARN(engine << " matched: slid " << slide << " m (" << (slide - stop) / stop * 100 << " %), rose " << rise << " m");
+    // the shear springs' stretch μmg/(ks A) is 0.6 µm and the friction moment's tilt lifts the
+    // centre by some µm (dem: 11 µm); 0.5 % and 0.1 mm leave room for a soft friction's stop
+    const bool slid_right = std::abs(slide - stop) < 0.005 * stop;
+    const bool stayed_down = rise < 1e-4;
+    if (engine != "mujoco") {
+        CHECK(slid_right);
+        CHECK(stayed_down);
+    } else {
+        // a known miss, reported and not failed (docs/backends.md, "MuJoCo matched while sliding"):
+        // in the elliptic cone's middle zone a sliding contact's normal force gains
+        // friction·|J·a − a_ref| of its friction rows over R_normal, and the undamped springs let
+        // that grow into hops (this cube: +13 %, hops of 2 mm; its impedance d = 1e-4 instead
+        // of 1e-3 fixed it settled and broke it placed unsettled: chaotic)
+        CHECK_NOFAIL(slid_right);
+        CHECK_NOFAIL(stayed_down);
+    }
+}
+
 TEST_CASE("every backend: the first sample after t = 0 holds the integrated pose", "[engines]") {
     const std::string engine = GENERATE(from_range(all_backend_names()));
     CAPTURE(engine);
