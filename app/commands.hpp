@@ -176,8 +176,11 @@ struct MakeOptions {
 };
 
 /// the scene text of generator `kind` (arch, wall, column, tower, house) for the parameter values
-/// (missing ones take their defaults); throws cairn::Error naming a bad option and its value
-std::string make_scene_text(const std::string& kind, const std::map<std::string, std::string>& values);
+/// (missing ones take their defaults); throws cairn::Error naming a bad option and its value.
+/// `warning`, if given, receives why the scene may not behave as its parameters suggest (an arch
+/// whose joints are too soft to stand on dem), also written as a comment line; empty if none
+std::string make_scene_text(const std::string& kind, const std::map<std::string, std::string>& values,
+                            std::string* warning = nullptr);
 
 /// add `cairn make` and its generators to `app`, binding their options to `options`; returns the
 /// generators' subcommands

@@ -146,3 +146,22 @@ TEST_CASE("the shipped generated scenes are what their header's cairn make comma
     CHECK(checked.count("structures/arch_thick.toml") == 1);
     CHECK(checked.count("structures/arch_thin.toml") == 1);
 }
+
+TEST_CASE("cairn make arch warns when its joints are too soft for it to stand on dem", "[app][make]") {
+    const auto dir = fresh_dir("make_arch_soft");
+    // t/R = 0.13 is 1.22 x the least t/R of 21 voussoirs; at kn 1e9 kn·t/(ρgR) = 5.1e3, below the
+    // 1.02e4 at which it was measured to stand (docs/dem.md; tests/backends/dem/test_dem_arch_thickness)
+    const std::string arch = "make arch --voussoirs 21 --radius 1m --depth 1m --thickness-ratio 0.13";
+    const auto soft = run_cairn(arch, dir);
+    REQUIRE(soft.exit_code == 0);
+    CHECK_THAT(soft.err, Contains("warning: cairn make arch: t/R = 0.13 is 1.22 x the least t/R (0.107) of 21 voussoirs"));
+    CHECK_THAT(soft.err, Contains("--kn 2e+09 or more"));
+    CHECK_THAT(soft.out, Contains("\n# warning: t/R = 0.13 is 1.22 x"));
+    // at the measured stiffness, and below the least thickness (it must fall anyway), no warning
+    for (const std::string& quiet : {arch + " --kn 2e9", std::string("make arch --voussoirs 21 --thickness-ratio 0.1")}) {
+        const auto r = run_cairn(quiet, dir);
+        REQUIRE(r.exit_code == 0);
+        CHECK_THAT(r.err, !Contains("warning"));
+        CHECK_THAT(r.out, !Contains("# warning"));
+    }
+}
