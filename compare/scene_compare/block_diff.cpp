@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "metrics/signal.hpp"
+#include "output/number_format.hpp"
 
 namespace cairn::scene_compare {
 
@@ -58,6 +59,22 @@ BlockPeaks block_peaks(const BlockHistory& h) {
         p.speed = std::max(p.speed, h.speed[i]);
     }
     return p;
+}
+
+std::string compliance_disagreement(const std::vector<VariantPeak>& peaks) {
+    std::vector<double> rigid;
+    for (const auto& p : peaks)
+        if (p.rigid) rigid.push_back(p.angle);
+    if (rigid.empty()) return {};
+    std::sort(rigid.begin(), rigid.end());
+    const size_t n = rigid.size();
+    const double median = n % 2 ? rigid[n / 2] : 0.5 * (rigid[n / 2 - 1] + rigid[n / 2]);
+    std::string far;
+    for (const auto& p : peaks)
+        if (p.compliant && std::abs(p.angle - median) > std::max(0.05, 0.5 * median))
+            far += (far.empty() ? "" : ", ") + p.name + " " + number_text(p.angle, 3) + " rad";
+    if (far.empty()) return {};
+    return far + " against the rigid-contact engines' " + number_text(median, 3) + " rad (median)";
 }
 
 }  // namespace cairn::scene_compare

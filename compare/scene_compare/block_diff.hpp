@@ -3,6 +3,8 @@
 /// the difference passes a threshold, and peaks.
 
 #include <cmath>
+#include <string>
+#include <vector>
 
 #include "scene_compare/block_history.hpp"
 
@@ -47,5 +49,18 @@ struct BlockPeaks {
 };
 
 BlockPeaks block_peaks(const BlockHistory& h);
+
+/// One variant's largest rotation over every free block, for comparing kinds of contact.
+struct VariantPeak {
+    std::string name;           ///< the variant, e.g. "dem-rigid"
+    bool compliant = false;     ///< dem's penalty bed (kn, ks in every joint)
+    bool rigid = false;         ///< an engine's rigid (non-penalty) contact
+    double angle = 0.0;         ///< largest rotation angle of any free block, rad
+};
+
+/// the compliant variants whose largest rotation is far from the rigid-contact variants' median
+/// (by more than 0.05 rad and more than half that median), as "dem-rigid 3.14 rad, ... against
+/// the rigid-contact engines' 0.113 rad (median)"; empty when none is, or either kind is missing
+std::string compliance_disagreement(const std::vector<VariantPeak>& peaks);
 
 }  // namespace cairn::scene_compare

@@ -68,6 +68,32 @@ std::vector<std::string> contact_row(const CaseRun& r) {
             std::to_string(most), number_text(sum / double(r.samples.size()), 4)};
 }
 
+/// the bullet on dem's compliant joints against the engines' rigid contact, when the comparison
+/// has both, naming the dem variants whose largest rotation is far from the rigid engines'
+std::string compliance_text(const std::vector<VariantHistories>& variants, const Scene& scene) {
+    std::vector<VariantPeak> peaks;
+    bool compliant = false, rigid = false;
+    for (const auto& v : variants) {
+        VariantPeak p{v.run->variant.name, v.run->variant.backend == "dem", !v.run->variant.penalty(), 0.0};
+        for (const auto& b : v.blocks) p.angle = std::max(p.angle, block_peaks(b).angle);
+        compliant = compliant || p.compliant;
+        rigid = rigid || p.rigid;
+        peaks.push_back(p);
+    }
+    if (!compliant || !rigid) return {};
+    std::string text = "Compliant against rigid joints: dem puts springs of kn = " + number_text(scene.contact.kn, 3) +
+                       " N/m³ (ks = " + number_text(scene.contact.ks, 3) +
+                       " N/m³) over every joint, the rigid modes none. Near a threshold (a block or column just above "
+                       "the ground acceleration that uplifts it, an arch near its least thickness) that compliance "
+                       "alone can change the outcome (docs/dem.md, \"Rocking under a pulse\" and \"An arch near its "
+                       "minimum thickness needs stiff joints\"); dem approaches the rigid answer as kn grows, so rerun "
+                       "it stiffer (--set contact.kn=... --set contact.ks=...) to tell the joints' compliance from an "
+                       "engine's error.";
+    const std::string far = compliance_disagreement(peaks);
+    if (!far.empty()) text += " Here the largest rotations differ: " + far + ".";
+    return text;
+}
+
 /// false for a capability row the scene does not use (a damping it does not set, hexahedra it does
 /// not have, deformable blocks the reference engines are never asked for); rows not named here apply
 bool applies(Feature feature, const Scene& scene, bool engine) {
@@ -180,6 +206,8 @@ report::Document write_compare_report(const CaseResult& result, const CompareCon
         "they stay within that.",
         "Each variant keeps one colour in every figure.",
     };
+    const std::string compliance = compliance_text(variants, scene);
+    if (!compliance.empty()) how.push_back(compliance);
     d.bullets(how);
 
     report::Table diff{{"block", "variant", "position RMS (m)", "position diverged at (s)", "largest distance (m)",

@@ -76,3 +76,18 @@ TEST_CASE("a scene without a reference runs every variant, and --model filters t
     CHECK(compare_variants(s, engines, "deformable").size() == 1);
     CHECK(compare_variants(s, engines, "rigid").size() == 4);
 }
+
+TEST_CASE("compliance disagreement names the dem variants far from the rigid engines' median rotation",
+          "[scene_compare]") {
+    using scene_compare::VariantPeak;
+    // the drum column under a 0.35 g pulse (docs/dem.md): dem overturns, the rigid engines rock
+    const std::vector<VariantPeak> column{{"dem-rigid", true, false, 3.136},   {"dem-deformable", true, false, 3.127},
+                                          {"bullet-rigid", false, true, 0.1124}, {"bullet-matched", false, false, 0.1295},
+                                          {"ode-rigid", false, true, 0.1131},    {"mujoco-rigid", false, true, 0.1133}};
+    const std::string text = scene_compare::compliance_disagreement(column);
+    CHECK(text == "dem-rigid 3.14 rad, dem-deformable 3.13 rad against the rigid-contact engines' 0.113 rad (median)");
+    // within 0.05 rad (or half the median) it is agreement; without a rigid-contact variant, no comparison
+    CHECK(scene_compare::compliance_disagreement({{"dem-rigid", true, false, 0.16}, {"ode-rigid", false, true, 0.113}}).empty());
+    CHECK_FALSE(scene_compare::compliance_disagreement({{"dem-rigid", true, false, 0.17}, {"ode-rigid", false, true, 0.113}}).empty());
+    CHECK(scene_compare::compliance_disagreement({{"dem-rigid", true, false, 3.1}, {"ode-matched", false, false, 0.1}}).empty());
+}
