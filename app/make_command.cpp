@@ -230,7 +230,7 @@ struct Generated {
 
 /// joint stiffness number kn·t/(ρ·g·R) at which a 21-voussoir semicircular arch of t/R = ratio ×
 /// its least t/R was measured to stand on dem (docs/dem.md, "An arch near its minimum thickness
-/// needs stiff joints"; R = 1 m, overlap, ζ = 0.1, released as placed): the least measured
+/// needs stiff joints"; R = 1 m, overlap, ζ = 0.1, the generator's settled start): the least measured
 /// value at which it stood, log-interpolated between the measured ratios; 0 from 1.5 × on (every
 /// arch measured there stood at kn 1e9)
 double arch_joint_stiffness_needed(double ratio) {
