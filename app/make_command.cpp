@@ -303,12 +303,11 @@ Generated generate(const std::string& kind, const std::map<std::string, double>&
             o << "[probes.crown]   # middle of the crown's intrados\nblock = \"V" << (a.voussoirs + 1) / 2
               << "\"\npoint = [0.0, 0.0, " << a.radius - 0.5 * a.thickness << "]   # m, world\n\n";
         }
-        if (a.pointed == 0.0 && a.angle >= M_PI)
-            g.warning = arch_stiffness_warning(a, s.contact.kn, v.at("density"),
-                                               oracle::SemicircularArch{a.voussoirs}.minimum_thickness());
+        const bool semicircular = a.pointed == 0.0 && a.angle >= M_PI;
+        const double least = semicircular ? oracle::SemicircularArch{a.voussoirs}.minimum_thickness() : NAN;
+        if (semicircular) g.warning = arch_stiffness_warning(a, s.contact.kn, v.at("density"), least);
         if (text.at("reference") == "limit-analysis") {
-            if (a.pointed > 0.0 || a.angle < M_PI) throw Error("--reference limit-analysis needs a semicircular arch");
-            const double least = oracle::SemicircularArch{a.voussoirs}.minimum_thickness();
+            if (!semicircular) throw Error("--reference limit-analysis needs a semicircular arch");
             const bool stands = a.thickness / a.radius > least;
             o << "[reference]   # t/R = " << a.thickness / a.radius << (stands ? " above" : " below")
               << " the least t/R = " << least << " at which a thrust line fits " << a.voussoirs

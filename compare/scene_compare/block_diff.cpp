@@ -4,6 +4,7 @@
 
 #include "metrics/signal.hpp"
 #include "output/number_format.hpp"
+#include "run/run_jobs.hpp"
 
 namespace cairn::scene_compare {
 
@@ -66,15 +67,13 @@ std::string compliance_disagreement(const std::vector<VariantPeak>& peaks) {
     for (const auto& p : peaks)
         if (p.rigid) rigid.push_back(p.angle);
     if (rigid.empty()) return {};
-    std::sort(rigid.begin(), rigid.end());
-    const size_t n = rigid.size();
-    const double median = n % 2 ? rigid[n / 2] : 0.5 * (rigid[n / 2 - 1] + rigid[n / 2]);
+    const double middle = median(rigid);
     std::string far;
     for (const auto& p : peaks)
-        if (p.compliant && std::abs(p.angle - median) > std::max(0.05, 0.5 * median))
+        if (p.compliant && std::abs(p.angle - middle) > std::max(0.05, 0.5 * middle))
             far += (far.empty() ? "" : ", ") + p.name + " " + number_text(p.angle, 3) + " rad";
     if (far.empty()) return {};
-    return far + " against the rigid-contact engines' " + number_text(median, 3) + " rad (median)";
+    return far + " against the rigid-contact engines' " + number_text(middle, 3) + " rad (median)";
 }
 
 }  // namespace cairn::scene_compare

@@ -70,12 +70,15 @@ std::vector<std::string> contact_row(const CaseRun& r) {
 
 /// the bullet on dem's compliant joints against the engines' rigid contact, when the comparison
 /// has both, naming the dem variants whose largest rotation is far from the rigid engines'
-std::string compliance_text(const std::vector<VariantHistories>& variants, const Scene& scene) {
+/// (`peaks_of[v][b]`: variant v's peaks of free block b)
+std::string compliance_text(const std::vector<VariantHistories>& variants,
+                            const std::vector<std::vector<BlockPeaks>>& peaks_of, const Scene& scene) {
     std::vector<VariantPeak> peaks;
     bool compliant = false, rigid = false;
-    for (const auto& v : variants) {
-        VariantPeak p{v.run->variant.name, v.run->variant.backend == "dem", !v.run->variant.penalty(), 0.0};
-        for (const auto& b : v.blocks) p.angle = std::max(p.angle, block_peaks(b).angle);
+    for (size_t v = 0; v < variants.size(); ++v) {
+        const auto& variant = variants[v].run->variant;
+        VariantPeak p{variant.name, variant.backend == "dem", !variant.penalty(), 0.0};
+        for (const BlockPeaks& b : peaks_of[v]) p.angle = std::max(p.angle, b.angle);
         compliant = compliant || p.compliant;
         rigid = rigid || p.rigid;
         peaks.push_back(p);
@@ -206,7 +209,10 @@ report::Document write_compare_report(const CaseResult& result, const CompareCon
         "they stay within that.",
         "Each variant keeps one colour in every figure.",
     };
-    const std::string compliance = compliance_text(variants, scene);
+    std::vector<std::vector<BlockPeaks>> peaks_of(variants.size());   // [variant][free block]
+    for (size_t v = 0; v < variants.size(); ++v)
+        for (const auto& h : variants[v].blocks) peaks_of[v].push_back(block_peaks(h));
+    const std::string compliance = compliance_text(variants, peaks_of, scene);
     if (!compliance.empty()) how.push_back(compliance);
     d.bullets(how);
 
@@ -218,7 +224,7 @@ report::Document write_compare_report(const CaseResult& result, const CompareCon
     for (size_t b = 0; b < blocks.size(); ++b) {
         th.position = 0.01 * blocks[b].size;
         for (size_t v = 0; v < variants.size(); ++v) {
-            const auto p = block_peaks(variants[v].blocks[b]);
+            const BlockPeaks& p = peaks_of[v][b];
             peaks.rows.push_back({blocks[b].name, variants[v].run->variant.name, number_text(p.displacement, 4),
                                   number_text(p.angle, 4), number_text(p.speed, 4)});
             if (base_index < 0 || int(v) == base_index) continue;
