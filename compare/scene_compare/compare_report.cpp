@@ -93,7 +93,10 @@ std::string compliance_text(const std::vector<VariantHistories>& variants,
                        "it stiffer (--set contact.kn=... --set contact.ks=...) to tell the joints' compliance from an "
                        "engine's error.";
     const std::string far = compliance_disagreement(peaks);
-    if (!far.empty()) text += " Here the largest rotations differ: " + far + ".";
+    if (!far.empty())
+        text += " Here the largest rotations differ: " + far +
+                "; the cause may be the compliance or a row of \"What each engine could not represent\" below "
+                "(friction against twisting, for one).";
     return text;
 }
 
@@ -103,6 +106,7 @@ bool applies(Feature feature, const Scene& scene, bool engine) {
     if (feature == Feature::mass_damping) return scene.damping.alpha != 0.0;
     if (feature == Feature::stiffness_damping) return scene.damping.beta != 0.0;
     if (feature == Feature::normal_damping) return scene.contact.damping_rule != ContactDampingRule::none;
+    if (feature == Feature::twist_friction) return scene.contact.friction > 0.0;
     if (feature == Feature::deformable_blocks) return !engine;
     if (feature == Feature::general_hexahedra)
         return std::any_of(scene.blocks.begin(), scene.blocks.end(), [](const BlockDef& b) { return b.shape == Shape::hexahedron; });

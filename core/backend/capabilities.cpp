@@ -17,6 +17,7 @@ const char* to_string(Feature f) {
         case Feature::normal_damping: return "normal contact damping";
         case Feature::elastic_stick: return "elastic stick before slip";
         case Feature::friction_shape: return "friction shape";
+        case Feature::twist_friction: return "friction against twisting";
         case Feature::mass_damping: return "mass-proportional damping";
         case Feature::stiffness_damping: return "stiffness-proportional damping";
         case Feature::deformable_blocks: return "deformable blocks";

@@ -14,6 +14,7 @@ enum class Feature {
     normal_damping,   ///< "normal contact damping"
     elastic_stick,   ///< "elastic stick before slip"
     friction_shape,   ///< "friction shape"
+    twist_friction,   ///< "friction against twisting"
     mass_damping,   ///< "mass-proportional damping"
     stiffness_damping,   ///< "stiffness-proportional damping"
     deformable_blocks,   ///< "deformable blocks"
