@@ -140,3 +140,62 @@ TEST_CASE("reference engines: a twisted cube holds until the friction at its fac
     // uneven split of the weight among the four points
     CHECK(threshold == Approx(1.0 / (std::sqrt(2.0) * kSquareMeanRadius)).epsilon(0.012));
 }
+
+TEST_CASE("every backend: three cubes pushed along a row slide together at (F - 3 mu W) / 3m and stay down",
+          "[engines][friction]") {
+    const std::string engine = GENERATE(from_range(all_backend_names()));
+    CAPTURE(engine);
+    // three 0.4 m cubes side by side on a fixed base (mu = 0.5, kn = ks = 1e10 N/m³), the first
+    // pushed along the row by 1.5 times the row's friction, 0.1 m above the base
+    Scene s = base_scene("friction_row");
+    s.contact.kn = s.contact.ks = 1e10;
+    s.contact.friction = 0.5;
+    // dem: with contact damping. Undamped, its elastic-Coulomb joints flutter while they slide
+    // (the blocks hop by up to 1 cm: docs/dem.md, "Flutter of undamped sliding contact")
+    s.contact.damping_rule = ContactDampingRule::ratio;
+    s.contact.damping = 0.05;
+    s.run.settle = true;
+    for (int i = 0; i < 3; ++i) add_box(s, std::string(1, char('A' + i)), Vec3(0.4, 0.4, 0.4), Vec3(0.4 * i, 0, 0.2), false);
+    add_box(s, "G", Vec3(4.0, 2.0, 0.4), Vec3(0.8, 0, -0.2), true);
+    const double m = 2600.0 * 0.064, weight = m * g;
+    LoadDef push;
+    push.block = 0;
+    push.force = Vec3(1.5 * 0.5 * 3 * weight, 0, 0);
+    push.point = Vec3(0, 0, -0.1);
+    s.loads.push_back(push);
+    auto b = build_backend(engine, s, "rigid");
+    const double t = 0.5;
+    const long long steps = std::llround(t / b->time_step());
+    double rise = 0.0, turn = 0.0;
+    for (long long i = 0; i < steps; ++i) {
+        if (b->step() != StepStatus::ok) FAIL(engine << " unstable: " << b->failure());
+        for (int k = 0; k < 3; ++k) {
+            const auto& blk = b->sample().blocks[size_t(k)];
+            rise = std::max(rise, blk.position.z() - 0.2);
+            turn = std::max(turn, blk.orientation.angularDistance(Quat::Identity()));
+        }
+    }
+    const double expected = 0.5 * (0.5 * 0.5 * g) * t * t;   // (F − 3μW)/(3m) = 0.5 μ g: 0.30656 m
+    const double slid = b->sample().blocks[0].position.x();
+    WARN(engine << ": slid " << slid << " m (" << (slid - expected) / expected * 100 << " %), rose " << rise
+                << " m, turned " << turn << " rad");
+    // 1 %: the issue's criterion for a slide; dem's shear springs stretch μ m g/(ks A) = 5 µm
+    const bool slid_right = std::abs(slid - expected) < 0.01 * expected;
+    // the push's moment, F·0.1 m = 0.225 W·m, is far below the row's 3W·0.6 m about its front
+    // edge: no block lifts. 0.1 mm and 1e-3 rad leave room for the springs' tilt under the push
+    const bool stayed = rise < 1e-4 && turn < 1e-3;
+    if (engine == "mujoco") {
+        // known misses, reported and not failed (docs/backends.md, "A row of blocks pushed along"):
+        // MuJoCo slides 4 % too far, and its blocks rise and turn
+        CHECK_NOFAIL(slid_right);
+        CHECK_NOFAIL(stayed);
+    } else if (engine == "ode") {
+        // ODE slides right, but its row turns and drifts sideways by an amount that jumps with the
+        // push's last digits (5 to 13 mm at 3672.85 to 3673.5 N; here 4e-4 rad): a reported miss
+        CHECK(slid_right);
+        CHECK_NOFAIL(stayed);
+    } else {
+        CHECK(slid_right);
+        CHECK(stayed);
+    }
+}
