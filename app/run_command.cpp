@@ -17,6 +17,7 @@ int run_command(RunJob job, bool quiet) {
     job.progress = !quiet && stderr_is_terminal();
     job.label = job.scene + " on " + job.backend;
     const JobOutcome o = execute_run(job);
+    for (const std::string& w : o.warnings) std::cerr << w << "\n";
     switch (o.status) {
         case JobStatus::input_error:
         case JobStatus::refused:

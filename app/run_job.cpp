@@ -108,6 +108,7 @@ JobOutcome execute_run(const RunJob& job) {
     o.energy_drift = result.energy_drift;
     o.max_balance_error = result.max_balance_error;
     o.energy_created = energy_created_text(result);
+    o.warnings = result.warnings;
     if (result.sample_count > 0) o.final_balance_error = result.final_energy.total() - result.initial_total;
     return o;
 }

@@ -42,6 +42,7 @@ struct JobOutcome {
     bool energy_drift = false;        ///< the balance error passed the drift bound
     double max_balance_error = 0.0;   ///< largest balance error relative to the energy scale
     std::string energy_created;       ///< energy_created_text of the run: empty unless energy appeared from nowhere
+    std::vector<std::string> warnings;///< the backend's warnings about this run ("warning: ..."), for stderr
 };
 
 /// run `job`: the outputs appear in job.out_dir as a set (output/staged_dir.hpp) or not at all;

@@ -16,6 +16,15 @@ namespace cairn {
 
 namespace {
 
+/// true when something can set a block sliding: a load (ground motion included) or a block
+/// thrown or spun at t = 0
+bool may_slide(const Scene& scene) {
+    if (!scene.loads.empty()) return true;
+    for (const BlockDef& b : scene.blocks)
+        if (!b.fixed && (b.velocity.squaredNorm() > 0.0 || b.angular_velocity.squaredNorm() > 0.0)) return true;
+    return false;
+}
+
 class DemBackend : public Backend {
 public:
     std::string name() const override { return "dem"; }
@@ -154,6 +163,11 @@ public:
                         " s: the springs ring without end after it, and the ringing can ratchet a block along "
                         "below friction; contact.damping_ratio = 0.05 lets it die out (docs/dem.md, Holding under loads)");
         }
+        if (undamped && scene_.contact.friction > 0.0 && may_slide(scene_))
+            n.push_back("warning: undamped contact: elastic-Coulomb joints can flutter while blocks slide on one another "
+                        "or twist on a face, and the blocks then hop by millimetres whatever the time step "
+                        "(docs/dem.md, Flutter of undamped sliding contact); contact.damping_ratio = 0.01 kept a pushed "
+                        "row of blocks down, a block spinning on its base needs 0.6");
         return n;
     }
 

@@ -167,6 +167,14 @@ report::Document write_compare_report(const CaseResult& result, const CompareCon
                              validation::outcome_text(r.outcome), r.steps ? std::to_string(r.steps) : "-",
                              r.dt > 0 ? number_text(r.dt, 3) : "-", number_text(r.wall_seconds, 3), run_note(r)});
     d.table(runs);
+    // what the engines warned about their own runs (run.json's notes that begin "warning: ")
+    std::vector<std::string> warned;
+    for (const auto& r : result.runs)
+        for (const auto& w : r.warnings) warned.push_back(r.variant.name + ": " + w.substr(9));
+    if (!warned.empty()) {
+        d.paragraph("Warnings the engines gave about their runs:");
+        d.bullets(warned);
+    }
 
     write_data(variants, base_index, ctx.max_block_figures, dir);
     const auto images = draw_figures(variants, base_index, block_names, ctx.max_block_figures, dir, figure_note);

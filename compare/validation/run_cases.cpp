@@ -44,6 +44,7 @@ void take_result(CaseRun& run, const Scene& scene, JobResult& r) {
     run.steps = r.result.steps;
     run.energy_gain = r.result.energy_gain;
     run.energy_created = energy_created_text(r.result);
+    run.warnings = r.result.warnings;
     try {
         if (run.samples.size() >= 3 && scene.reference) {   // a scene without a reference has nothing to judge
             run.analysis = cases::analyse_case(scene, run.samples, contact_kind(run.variant, scene));

@@ -26,6 +26,7 @@ struct CaseRun {
     std::string message;              ///< why it was refused, failed or went unstable
     double energy_gain = 0.0;         ///< J, RunResult::energy_gain: energy that appeared without a source
     std::string energy_created;       ///< energy_created_text of the run (empty unless flagged)
+    std::vector<std::string> warnings;///< the backend's warnings about the run ("warning: ...")
     std::vector<Sample> samples;      ///< what it produced (partial when unstable)
     double wall_seconds = 0.0;        ///< s, the stepping loop
     double dt = 0.0;                  ///< s

@@ -153,6 +153,8 @@ RunResult run_scene(Backend& backend, const Scene& scene, const RunOptions& opti
         }
     }
     r.wall_seconds = elapsed();
+    for (const std::string& note : backend.notes())
+        if (note.rfind("warning: ", 0) == 0) r.warnings.push_back(note);
     sink.end(r);
     return r;
 }

@@ -49,6 +49,7 @@ struct RunResult {
     double energy_gain_time = 0.0;   ///< s, the sample at which that rise was reached
     double energy_gain_scale = 0.0;  ///< J, the scale (EnergyBounds::created) that rise was judged against
     bool energy_created = false;     ///< the rise passed kCreatedBound of EnergyBounds::created
+    std::vector<std::string> warnings;  ///< the backend's notes that begin "warning: ", at the end of the run
 };
 
 /// "energy appeared from nowhere: +130 J by t = 2.205 s (0.65 × its scale, …: 200 J)" when

@@ -191,3 +191,64 @@ TEST_CASE("cairn compare writes the same numbers for one run at a time and for t
         CHECK(!read_file(dir / "1" / f).empty());
     }
 }
+
+TEST_CASE("dem warns of flutter on a pushed row without contact damping, on stderr and in the compare report",
+          "[app][compare]") {
+    // two 0.4 m cubes side by side, the first pushed along the row beyond friction: undamped
+    // elastic-Coulomb joints flutter while they slide (docs/dem.md); ζ = 0.01 keeps them down
+    const std::string row = R"([run]
+duration = 0.02
+[materials.stone]
+density = 2600
+young = 30e9
+poisson = 0.2
+[contact]
+kn = 1e10
+friction = 0.5
+[blocks.A]
+size = [0.4, 0.4, 0.4]
+position = [0, 0, 0.2]
+material = "stone"
+[blocks.B]
+size = [0.4, 0.4, 0.4]
+position = [0.4, 0, 0.2]
+material = "stone"
+[blocks.G]
+size = [3, 2, 0.4]
+position = [0.4, 0, -0.2]
+material = "stone"
+fixed = true
+[loads.push]
+block = "A"
+force = [2448.6, 0, 0]
+)";
+    const fs::path dir = fresh_dir("flutter_warning");
+    {
+        std::ofstream f(dir / "row.toml");
+        f << row;
+    }
+    const std::string warning = "warning: undamped contact: elastic-Coulomb joints can flutter";
+    const auto undamped = run_cairn("run " + (dir / "row.toml").string() + " --backend dem --out " + (dir / "u").string(), dir);
+    REQUIRE(undamped.exit_code == 0);
+    CHECK_THAT(undamped.err, Contains(warning));
+    CHECK_THAT(read_file(dir / "u" / "run.json"), Contains(warning));
+    const auto damped = run_cairn("run " + (dir / "row.toml").string() + " --backend dem --out " + (dir / "d").string() +
+                                      " --set contact.damping_ratio=0.01", dir);
+    REQUIRE(damped.exit_code == 0);
+    CHECK_THAT(damped.err, !Contains(warning));
+    // without a load nothing slides: no warning either
+    {
+        std::ofstream f(dir / "rest.toml");
+        f << row.substr(0, row.find("[loads.push]"));
+    }
+    const auto resting = run_cairn("run " + (dir / "rest.toml").string() + " --backend dem --out " + (dir / "r").string(), dir);
+    REQUIRE(resting.exit_code == 0);
+    CHECK_THAT(resting.err, !Contains(warning));
+    const auto compare = run_cairn("compare " + (dir / "row.toml").string() + " --backends dem,bullet --out " +
+                                       (dir / "c").string(), dir);
+    REQUIRE(compare.exit_code == 0);
+    const std::string md = read_file(dir / "c" / "report.md");
+    CHECK_THAT(md, Contains("Warnings the engines gave about their runs") &&
+                       Contains("- dem-rigid: undamped contact: elastic-Coulomb joints can flutter"));
+    CHECK_THAT(md, !Contains("- bullet-rigid: undamped contact"));
+}
