@@ -102,7 +102,7 @@ TEST_CASE("a 21-voussoir arch at 1.22 x its least thickness falls on soft joints
         Scene s = stone_scene(0.7);
         s.contact.kn = s.contact.ks = kn;
         s.contact.scheme = ContactScheme::overlap;
-        s.contact.subdivision = 1;
+        s.contact.subdivision = 2;   // as generated (the verdicts were measured the same at 1)
         s.contact.damping_rule = ContactDampingRule::ratio;
         s.contact.damping = 0.1;
         s.run.settle = true;   // as generated; the soft arch is refused by the settling and starts as placed
@@ -119,7 +119,7 @@ TEST_CASE("a 21-voussoir arch at 1.22 x its least thickness falls on soft joints
         test::run_dem(*b, 0.75, [&](const Sample& x) { z = x.blocks[crown].position.z(); });
         return z0 - z;
     };
-    // kn·t/(ρgR) = 5.1e3: measured 1.09 m down by 0.75 s (a collapse); any fall beyond 0.1 m is one
+    // kn·t/(ρgR) = 5.1e3: measured 1.08 m down by 0.75 s (1.09 at subdivision 1) (a collapse); any fall beyond 0.1 m is one
     CHECK(crown_drop(1e9) > 0.1);
     // 1.02e4: measured under 0.1 mm (the joints' closure); 1 mm is ten times that and far from a fall
     CHECK(std::abs(crown_drop(2e9)) < 1e-3);
