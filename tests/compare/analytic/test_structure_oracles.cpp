@@ -3,6 +3,7 @@
 
 #include <cmath>
 
+#include "analytic/arch_lateral.hpp"
 #include "analytic/arch_thrust.hpp"
 #include "analytic/stack_pushover.hpp"
 
@@ -76,4 +77,34 @@ TEST_CASE("a rigid stack under a ramp tips when λ passes B/H plus the ramp's la
         prev_lag = lag;
     }
     CHECK(std::isnan(column.rigid_ramp_time([](double) { return 0.25; }, 0.05, 10.0)));   // below B/H: never
+}
+
+TEST_CASE("an arch under a lateral acceleration: the thrust line of its weight at 0, none past the collapse", "[oracle][arch]") {
+    // λ = 0 is the symmetric problem of SemicircularArch, solved here as an asymmetric one: the
+    // same least thickness, within the bisections' resolution
+    for (int n : {9, 21, 25}) {
+        const double least = SemicircularArch{n}.minimum_thickness();
+        INFO("N = " << n);
+        CHECK(ArchUnderLateralLoad{n, 1.001 * least}.thrust_line_fits(0.0));
+        CHECK_FALSE(ArchUnderLateralLoad{n, 0.999 * least}.thrust_line_fits(0.0));
+        CHECK(ArchUnderLateralLoad{n, 0.999 * least}.collapse_acceleration() == 0.0);
+        // just above the least thickness the arch takes almost no lateral load
+        CHECK(ArchUnderLateralLoad{n, 1.01 * least}.collapse_acceleration() < 0.01);
+    }
+    // thicker arches take more, and the 21-voussoir arch at t/R = 0.15 takes 0.1479 g: four
+    // rigid engines keep it up at 0.95 times that and let it fall at 1.05 times
+    // (test_engine_arch_lateral.cpp)
+    double prev = 0.0;
+    for (double t : {0.12, 0.15, 0.2, 0.3}) {
+        const double lambda = ArchUnderLateralLoad{21, t}.collapse_acceleration();
+        INFO("t/R = " << t << ": λ = " << lambda);
+        CHECK(lambda > prev);
+        prev = lambda;
+    }
+    const ArchUnderLateralLoad arch{21, 0.15};
+    const double lambda = arch.collapse_acceleration();
+    CHECK(arch.thrust_line_fits(0.999 * lambda));
+    CHECK_FALSE(arch.thrust_line_fits(1.001 * lambda));
+    // the value the four engines were checked against (the same statics in a Python script: 0.14786)
+    CHECK(lambda == Approx(0.14786).margin(2e-4));
 }
