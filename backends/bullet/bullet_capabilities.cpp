@@ -16,7 +16,10 @@ std::vector<FeatureSupport> bullet_capabilities() {
         {Feature::elastic_stick, S::none, "velocity-level Coulomb friction: no shear spring"},
         {Feature::friction_shape, S::approximate, "two friction directions clamped separately per point (box), the first along the sliding "
          "velocity: sliding threshold 1.002 mu·W at 0, 30 and 45 degrees"},
-        {Feature::twist_friction, S::approximate, "a face's friction acts at the four corner points of its contact manifold: a square face under uniform weight holds a twist about its normal up to mu·W·a/√2, 1.85 times the mu·W·a·0.383 of friction spread over the face (measured: 1.849)"},
+        {Feature::twist_friction, S::approximate,
+         "a face's friction acts at the four corner points of its contact manifold: a square face under uniform weight holds a twist "
+         "about its normal up to mu·W·a/√2, 1.85 times the mu·W·a·0.383 of friction spread over the face "
+         "(measured: 1.849)"},
         {Feature::mass_damping, S::approximate, "body damping 1-exp(-alpha), applied after each step"},
         {Feature::stiffness_damping, S::none, "beta ignored (rigid bodies)"},
         {Feature::deformable_blocks, S::none, "refused: run with --model rigid"},

@@ -16,7 +16,10 @@ std::vector<FeatureSupport> mujoco_capabilities() {
         {Feature::elastic_stick, S::none, "soft velocity-level friction: slow creep instead of a shear spring"},
         {Feature::friction_shape, S::approximate, "elliptic cone (isotropic: sliding threshold 0.999-1.0005 mu·W at 0, 30 and 45 degrees); "
          "cone = \"pyramidal\" held beyond 1.6 mu·W at 30 and 45 degrees"},
-        {Feature::twist_friction, S::approximate, "a face's friction acts at the corner contacts of the box-box collider: a square face under uniform weight holds a twist about its normal up to mu·W·a/√2, 1.85 times the mu·W·a·0.383 of friction spread over the face (measured: 1.849)"},
+        {Feature::twist_friction, S::approximate,
+         "a face's friction acts at the corner contacts of the box-box collider: a square face under uniform weight holds a twist "
+         "about its normal up to mu·W·a/√2, 1.85 times the mu·W·a·0.383 of friction spread over the face "
+         "(measured: 1.849)"},
         {Feature::mass_damping, S::approximate, "velocities scaled by exp(-alpha·dt) after each step"},
         {Feature::stiffness_damping, S::none, "beta ignored (rigid bodies)"},
         {Feature::deformable_blocks, S::none, "refused: run with --model rigid"},

@@ -17,7 +17,10 @@ std::vector<FeatureSupport> ode_capabilities() {
         {Feature::friction_shape, S::approximate, "dContactApprox1: mu·N per direction, two directions (pyramid), the first along the trial sliding "
          "velocity (dContactFDir1): sliding threshold 1.002 mu·W at 0, 30 and 45 degrees (1.158 and 1.416 "
          "at 30 and 45 degrees without it)"},
-        {Feature::twist_friction, S::approximate, "a face's friction acts at the four corner contacts of the box-box collider: a square face under uniform weight holds a twist about its normal up to mu·W·a/√2, 1.85 times the mu·W·a·0.383 of friction spread over the face (measured: 1.849)"},
+        {Feature::twist_friction, S::approximate,
+         "a face's friction acts at the four corner contacts of the box-box collider: a square face under uniform weight holds a twist "
+         "about its normal up to mu·W·a/√2, 1.85 times the mu·W·a·0.383 of friction spread over the face "
+         "(measured: 1.849)"},
         {Feature::mass_damping, S::approximate, "velocities scaled by exp(-alpha·dt) after each step"},
         {Feature::stiffness_damping, S::none, "beta ignored (rigid bodies)"},
         {Feature::deformable_blocks, S::none, "refused: run with --model rigid"},

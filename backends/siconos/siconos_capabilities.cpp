@@ -16,7 +16,10 @@ std::vector<FeatureSupport> siconos_capabilities() {
         {Feature::elastic_stick, S::none, "Coulomb friction as a complementarity (rigid stick): no shear spring"},
         {Feature::friction_shape, S::exact, "the exact Coulomb cone per contact point (3-D friction-contact problem), no "
          "facets"},
-        {Feature::twist_friction, S::approximate, "a face's friction acts at the four corner contact points: a square face under uniform weight holds a twist about its normal up to mu·W·a/√2, 1.85 times the mu·W·a·0.383 of friction spread over the face (measured: 1.849)"},
+        {Feature::twist_friction, S::approximate,
+         "a face's friction acts at the four corner contact points: a square face under uniform weight holds a twist "
+         "about its normal up to mu·W·a/√2, 1.85 times the mu·W·a·0.383 of friction spread over the face "
+         "(measured: 1.849)"},
         {Feature::mass_damping, S::approximate,
          "forces -alpha·m·v and -alpha·I·omega from the start-of-step velocities"},
         {Feature::stiffness_damping, S::none, "beta ignored (rigid bodies)"},
