@@ -4,6 +4,8 @@
 #include <cmath>
 #include <vector>
 
+#include <Eigen/Dense>
+
 namespace cairn::oracle {
 
 namespace {
@@ -52,20 +54,12 @@ std::vector<Constraint> joint_constraints(int n, double t, double lambda) {
     return out;
 }
 
-/// x = A⁻¹·b for three constraints; false when they are (nearly) dependent
-bool solve3(const Constraint& p, const Constraint& q, const Constraint& r, std::array<double, 3>& x) {
-    const auto& a = p.a;
-    const auto& b = q.a;
-    const auto& c = r.a;
-    const double det = a[0] * (b[1] * c[2] - b[2] * c[1]) - a[1] * (b[0] * c[2] - b[2] * c[0]) + a[2] * (b[0] * c[1] - b[1] * c[0]);
-    if (std::abs(det) < 1e-14) return false;
-    auto d = [&](int col) {   // Cramer: the determinant with column `col` replaced by the right side
-        std::array<double, 3> ra = a, rb = b, rc = c;
-        ra[col] = p.b, rb[col] = q.b, rc[col] = r.b;
-        return ra[0] * (rb[1] * rc[2] - rb[2] * rc[1]) - ra[1] * (rb[0] * rc[2] - rb[2] * rc[0]) +
-               ra[2] * (rb[0] * rc[1] - rb[1] * rc[0]);
-    };
-    for (int i = 0; i < 3; ++i) x[i] = d(i) / det;
+/// the point where the planes of three constraints meet; false when they are (nearly) dependent
+bool solve3(const Constraint& p, const Constraint& q, const Constraint& r, Eigen::Vector3d& x) {
+    Eigen::Matrix3d m;
+    m << p.a[0], p.a[1], p.a[2], q.a[0], q.a[1], q.a[2], r.a[0], r.a[1], r.a[2];
+    if (std::abs(m.determinant()) < 1e-14) return false;
+    x = m.partialPivLu().solve(Eigen::Vector3d(p.b, q.b, r.b));
     return true;
 }
 
@@ -76,7 +70,7 @@ bool ArchUnderLateralLoad::thrust_line_fits(double lambda) const {
     // the feasible set is a bounded polyhedron (the joints bound the reaction): it is empty unless
     // one of its vertices, an intersection of three constraint planes, satisfies every constraint
     const double tol = 1e-12;
-    std::array<double, 3> x;
+    Eigen::Vector3d x;
     for (size_t i = 0; i < cs.size(); ++i)
         for (size_t j = i + 1; j < cs.size(); ++j)
             for (size_t k = j + 1; k < cs.size(); ++k) {
