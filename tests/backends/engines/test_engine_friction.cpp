@@ -64,10 +64,13 @@ namespace {
 // uniform pressure p and friction mu resist a twist about the centre with is mu·p·a²·(this)·a
 const double kSquareMeanRadius = (std::sqrt(2.0) + std::log(1.0 + std::sqrt(2.0))) / 6.0;   // 0.382598
 
-// does a 0.4 m cube (mu = 0.5, kn = ks = 1e10 N/m³) on a fixed base turn by more than 1e-3 rad in
-// 0.4 s under a couple about z of `ratio` times the uniform-pressure twist limit mu·W·a·0.3826?
-// The couple is two opposite forces along x at mid-height, 0.2 m either side of the centre
-bool twists(const std::string& engine, double ratio, int subdivision) {
+// the uniform-pressure twist limit mu·W·a·0.3826 of the 0.4 m cube of twist_scene, N·m
+double twist_limit() { return 0.5 * 2600.0 * 0.064 * g * 0.4 * kSquareMeanRadius; }
+
+// a 0.4 m cube (mu = 0.5, kn = ks = 1e10 N/m³) on a fixed base under a couple about z of `ratio`
+// times twist_limit(), ramped over `ramp` (s): two opposite forces along x at mid-height, 0.2 m
+// either side of the centre
+Scene twist_scene(double ratio, int subdivision, double ramp) {
     Scene s = base_scene("friction_twist");
     s.contact.kn = s.contact.ks = 1e10;
     s.contact.friction = 0.5;
@@ -75,17 +78,22 @@ bool twists(const std::string& engine, double ratio, int subdivision) {
     s.run.settle = true;   // as a scene file gets by default: dem starts with its springs loaded
     add_box(s, "A", Vec3(0.4, 0.4, 0.4), Vec3(0, 0, 0.2), false);
     add_box(s, "B", Vec3(2.0, 2.0, 0.4), Vec3(0, 0, -0.2), true);
-    const double weight = 2600.0 * 0.064 * g;
-    const double torque = ratio * 0.5 * weight * 0.4 * kSquareMeanRadius;   // N·m
+    const double torque = ratio * twist_limit();   // N·m
     for (double side : {-1.0, 1.0}) {
         LoadDef h;
         h.block = 0;
         h.force = Vec3(-side * torque / 0.4, 0, 0);   // the pair's moment about z: +torque
         h.point = Vec3(0, 0.2 * side, 0);
+        h.ramp = ramp;
         s.loads.push_back(h);
     }
+    return s;
+}
+
+// does the cube of twist_scene, the couple applied at once, turn by more than 1e-3 rad in 0.4 s?
+bool twists(const std::string& engine, double ratio, int subdivision) {
     auto b = make_backend(engine);
-    b->build(s, RunOptions{});
+    b->build(twist_scene(ratio, subdivision, 0.0), RunOptions{});
     const long long steps = std::llround(0.4 / b->time_step());
     for (long long i = 0; i < steps; ++i)
         if (b->step() != StepStatus::ok) FAIL(engine << " unstable: " << b->failure());
@@ -206,23 +214,8 @@ TEST_CASE("dem: a couple below the twist limit, ramped and held undamped, twists
     // a couple ramped over 1 s and held 3 s more, no contact damping (issue 11, "holding holds",
     // for a twist); returns the twist (rad) when fully applied, 1 s later and at the end
     auto twist = [](double ratio) {
-        Scene s = base_scene("twist_hold");
-        s.contact.kn = s.contact.ks = 1e10;
-        s.contact.friction = 0.5;
-        s.run.settle = true;
-        add_box(s, "A", Vec3(0.4, 0.4, 0.4), Vec3(0, 0, 0.2), false);
-        add_box(s, "B", Vec3(2.0, 2.0, 0.4), Vec3(0, 0, -0.2), true);
-        const double torque = ratio * 0.5 * 2600.0 * 0.064 * g * 0.4 * kSquareMeanRadius;   // N·m
-        for (double side : {-1.0, 1.0}) {
-            LoadDef h;
-            h.block = 0;
-            h.force = Vec3(-side * torque / 0.4, 0, 0);
-            h.point = Vec3(0, 0.2 * side, 0);
-            h.ramp = 1.0;
-            s.loads.push_back(h);
-        }
         auto b = make_backend("dem");
-        b->build(s, RunOptions{});
+        b->build(twist_scene(ratio, 4, 1.0), RunOptions{});
         auto yaw = [&] { return b->sample().blocks[0].orientation.angularDistance(Quat::Identity()); };
         double at_full = 0.0, later = 0.0;
         const long long steps = std::llround(4.0 / b->time_step());
@@ -236,8 +229,7 @@ TEST_CASE("dem: a couple below the twist limit, ramped and held undamped, twists
     // 0.7 of mu·W·a·0.3826: every sub-contact sticks (the corner ones, loaded most, slip from
     // 0.77), so the twist is T/(ks·J) with the sub-contacts' polar moment, the midpoint rule of
     // a⁴/6, (1 − 1/n²)·a⁴/6 at n = 4; 1 % for the ringing the ramp leaves in the springs
-    const double torque = 0.7 * 0.5 * 2600.0 * 0.064 * g * 0.4 * kSquareMeanRadius;
-    const double elastic = torque / (1e10 * (1.0 - 1.0 / 16.0) * std::pow(0.4, 4) / 6.0);
+    const double elastic = 0.7 * twist_limit() / (1e10 * (1.0 - 1.0 / 16.0) * std::pow(0.4, 4) / 6.0);
     const auto [stuck, stuck_later, stuck_end] = twist(0.7);
     CAPTURE(stuck, stuck_later, stuck_end, elastic);
     CHECK(stuck == Approx(elastic).epsilon(0.01));
