@@ -30,11 +30,13 @@ void Block::update_nodes() {
         x[i] = body.x + arm;
         v[i] = fixed ? Vec3::Zero() : Vec3(body.v + w.cross(arm));
     }
-}
-
-double Block::motion_since_refresh() const {
-    Quat dq = body.q * q_at_refresh.conjugate();
-    return (body.x - x_at_refresh).norm() + r_max * rotation_vector(dq).norm();
+    // the frame of 4 corners in which node_weights gives a point's affine weights
+    const int n0 = mesh.node(0, 0, 0);
+    Mat3 e;
+    e.col(0) = x[mesh.node(1, 0, 0)] - x[n0];
+    e.col(1) = x[mesh.node(0, 1, 0)] - x[n0];
+    e.col(2) = x[mesh.node(0, 0, 1)] - x[n0];
+    corner_inverse = e.inverse();
 }
 
 double Block::turn_since_refresh() const {

@@ -35,6 +35,7 @@ struct Block {
     std::vector<std::vector<HitPoint>> hits;  ///< hitting points of each boundary face
     std::array<double, 6> side_area{};        ///< area of each side at t = 0, m²
 
+    Mat3 corner_inverse = Mat3::Identity();   ///< rigid: inverse of the corner frame node_weights uses (set by update_nodes), 1/m
     Vec3 x_at_refresh = Vec3::Zero();         ///< centre at the last contact refresh, m
     Quat q_at_refresh = Quat::Identity();     ///< orientation at the last contact refresh
 
@@ -55,8 +56,6 @@ struct Block {
     /// rigid: set node positions and velocities from the pose and momenta;
     /// deformable: set the best-fit pose from the nodes
     void update_nodes();
-    /// bound on how far any point moved since the last refresh, m
-    double motion_since_refresh() const;
     /// angle the block's frame turned through since the last refresh, rad
     double turn_since_refresh() const;
     /// axis-aligned bounds of the nodes

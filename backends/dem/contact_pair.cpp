@@ -86,7 +86,7 @@ SideFrames SideFrames::of(const Block& b) {
     SideFrames f;
     for (int k = 0; k < 6; ++k) {
         const Quad q = b.side_quad(k);
-        f.normal[k] = quad_normal(q, Vec2::Zero());
+        f.normal[k] = quad_centre_normal(q);
         f.centre[k] = 0.25 * (q[0] + q[1] + q[2] + q[3]);
     }
     return f;
@@ -151,11 +151,7 @@ NodeWeights node_weights(const Block& b, int face, const Vec3& x) {
         // rigid: any affine weights reproduce the force and its moment; 4 corners of the block
         const Mesh& m = b.mesh;
         const int n0 = m.node(0, 0, 0), n1 = m.node(1, 0, 0), n2 = m.node(0, 1, 0), n3 = m.node(0, 0, 1);
-        Mat3 e;
-        e.col(0) = b.x[n1] - b.x[n0];
-        e.col(1) = b.x[n2] - b.x[n0];
-        e.col(2) = b.x[n3] - b.x[n0];
-        const Vec3 l = e.inverse() * (x - b.x[n0]);
+        const Vec3 l = b.corner_inverse * (x - b.x[n0]);   // the corner frame's inverse (update_nodes)
         nw.count = 4;
         nw.node = {n0, n1, n2, n3};
         nw.w = {1.0 - l.sum(), l[0], l[1], l[2]};

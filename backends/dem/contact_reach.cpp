@@ -45,11 +45,23 @@ bool may_act(const std::vector<Block>& blocks, const std::vector<SideFrames>& fr
     // affine constraint a·p + b changes by at most |a| times that
     const double reach = margin + g.flush_tol;
     std::array<Affine, kMaxSideConstraints> cons;
+    // a constraint that none of the face's corners meets within the reach rules the side out
+    auto missed = [&](int k0, int k1) {
+        for (int k = k0; k < k1; ++k) {
+            const double slack = cons[size_t(k)].a.norm() * reach;
+            bool none = true;
+            for (const auto& p : hq) none = none && cons[size_t(k)](p) < -slack;
+            if (none) return true;
+        }
+        return false;
+    };
     for (int s = 0; s < 6; ++s) {
         const Vec3& ns = g.normal[size_t(s)];
         if (!(nh.dot(ns) < -1e-3 + turn)) continue;
         if (!may_be_target(blocks, h, hit_side, t, s, nh, ns, turn)) continue;
-        int nc = side_constraints(g, s, nh, true, cons);
+        const int side_count = side_constraints(g, s, nh, true, cons);
+        if (missed(0, side_count)) continue;   // the side's planes first: most faces stop here
+        int nc = side_count;
         if (tb.mesh.side_grid[size_t(s)].size() == 1) {
             // the side is one face: behind it and over it (inside each of its edges)
             const Quad tq = tb.face_quad(tb.mesh.side_grid[size_t(s)][0]);
@@ -62,14 +74,7 @@ bool may_act(const std::vector<Block>& blocks, const std::vector<SideFrames>& fr
                 cons[size_t(nc++)] = Affine{a, -a.dot(a0)};
             }
         }
-        bool missed = false;
-        for (int k = 0; k < nc && !missed; ++k) {
-            const double slack = cons[size_t(k)].a.norm() * reach;
-            bool none = true;
-            for (const auto& p : hq) none = none && cons[size_t(k)](p) < -slack;
-            missed = none;
-        }
-        if (!missed) return true;
+        if (!missed(side_count, nc)) return true;
     }
     return false;
 }

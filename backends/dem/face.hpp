@@ -25,6 +25,13 @@ inline Vec3 quad_point(const Quad& c, const Vec2& xi) {
 
 /// outward unit normal at (ξ, η)
 Vec3 quad_normal(const Quad& c, const Vec2& xi);
+/// outward unit normal at the centre (ξ = η = 0): quad_normal(c, 0) to the last bit, fewer operations
+inline Vec3 quad_centre_normal(const Quad& c) {
+    // the tangents' weights at the centre are ±¼ (exact), so the sums match quad_normal's
+    const Vec3 t1 = 0.25 * (((c[1] - c[0]) + c[2]) - c[3]);
+    const Vec3 t2 = 0.25 * (((-c[0] - c[1]) + c[2]) + c[3]);
+    return t1.cross(t2).normalized();
+}
 
 /// closest point of the face's bilinear surface to p (natural coordinates not clamped)
 struct Projection {

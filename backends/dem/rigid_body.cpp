@@ -63,7 +63,9 @@ void drift(RigidBody& b, double dt) {
     Vec3 w_body = b.inv_inertia_body * (b.q.conjugate() * b.L);
     for (int it = 0; it < 4; ++it) {
         Quat q_mid = (b.q * quat_from_rotation_vector(0.5 * dt * w_body)).normalized();
-        w_body = b.inv_inertia_body * (q_mid.conjugate() * b.L);
+        const Vec3 w_next = b.inv_inertia_body * (q_mid.conjugate() * b.L);
+        if (w_next == w_body) break;   // a fixed point to the last bit: further sweeps repeat it
+        w_body = w_next;
     }
     b.q = (b.q * quat_from_rotation_vector(dt * w_body)).normalized();
 }

@@ -113,17 +113,7 @@ bool World::step() {
 // stage: refresh the contact candidates every n steps, or sooner if the margin could be crossed
 void World::refresh_if_due() {
     ++steps_since_refresh_;
-    // the check runs before this step's move: add a bound on it (speed × dt)
-    auto speed = [](const Block& b) {
-        if (!b.deformable) return b.body.v.norm() + b.r_max * b.body.omega().norm();
-        double v = 0.0;
-        for (const auto& vn : b.v) v = std::max(v, vn.norm());
-        return v;
-    };
     const long count = long(blocks_.size());
-    // overlap scheme: also before a block turns by kRefreshTurn (the refresh leaves out the
-    // sides that cannot face each other within that turn)
-    auto spin = [](const Block& b) { return b.deformable ? 0.0 : b.body.omega().norm(); };
     const double half = 0.5 * contacts_.margin();
     const bool turns = prune_ && scene_.contact.scheme == ContactScheme::overlap;
     bool early = false, turned = false;
@@ -132,10 +122,22 @@ void World::refresh_if_due() {
     for (long i = 0; i < count; ++i) {
         const Block& b = blocks_[size_t(i)];
         if (b.fixed) continue;
-        const double move = speed(b) * dt_;
+        // the check runs before this step's move: add a bound on it (speed × dt); the overlap
+        // scheme also refreshes before a block turns by kRefreshTurn (the refresh leaves out the
+        // sides that cannot face each other within that turn)
+        const double spin = b.deformable ? 0.0 : b.body.omega().norm();   // rad/s
+        double speed = b.body.v.norm() + b.r_max * spin;                 // m/s
+        if (b.deformable) {
+            speed = 0.0;
+            for (const auto& vn : b.v) speed = std::max(speed, vn.norm());
+        }
+        const double move = speed * dt_;
         fastest = std::max(fastest, move);
-        if (b.motion_since_refresh() + move > half) early = true;
-        if (turns && b.turn_since_refresh() + spin(b) * dt_ > kRefreshTurn) turned = true;
+        const double turn = b.turn_since_refresh();   // rad
+        // a bound on how far any point moved since the refresh, m
+        const double moved = (b.body.x - b.x_at_refresh).norm() + b.r_max * turn;
+        if (moved + move > half) early = true;
+        if (turns && turn + spin * dt_ > kRefreshTurn) turned = true;
     }
     const bool due = steps_since_refresh_ >= scene_.run.contact_interval;
     if (early && !due) ++early_refreshes_;   // counted: a margin too small for the motion
