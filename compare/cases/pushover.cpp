@@ -3,12 +3,14 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <optional>
 
 #include "cases/case_kind.hpp"
 #include "cases/case_util.hpp"
 #include "cases/structure_kinds.hpp"
 #include "output/number_format.hpp"
 #include "error.hpp"
+#include "geometry/hexahedron.hpp"
 
 namespace cairn::cases {
 
@@ -36,39 +38,112 @@ double ground_multiplier(const Scene& scene, double t) {
     return scene.ground_motion->components.front().acceleration.at(t - scene.ground_motion->start) / gravity(scene);
 }
 
-oracle::BlockStack scene_stack(const Scene& scene) {
-    if (!scene.ground_motion) throw Error(scene.source + ": a pushover reference needs a [ground_motion] table");
-    if (scene.ground_motion->components.size() != 1)
-        throw Error(scene.source + ": a pushover reference needs a [ground_motion] of one record");
-    const Vec3 dir = scene.ground_motion->components.front().direction;
-    Vec3 along = dir - dir.dot(scene.gravity.normalized()) * scene.gravity.normalized();
-    if (along.norm() < 1e-9) throw Error(scene.source + ": a pushover reference needs a horizontal [ground_motion] direction");
-    along.normalize();
+namespace {
+
+/// a layer of the free blocks: its bounds along, across and up, its mass and its blocks' volume
+struct LayerBounds {
+    double lo[3] = {INFINITY, INFINITY, INFINITY}, hi[3] = {-INFINITY, -INFINITY, -INFINITY};
+    double mass = 0.0;     ///< kg
+    double volume = 0.0;   ///< m³, the blocks' own (less than the bounds' where a course has gaps)
+    int blocks = 0;        ///< how many
+};
+
+/// the direction of the scene's one horizontal record, or nothing
+std::optional<Vec3> push_direction(const Scene& scene) {
+    if (!scene.ground_motion || scene.ground_motion->components.size() != 1) return std::nullopt;
+    const Vec3 dir = scene.ground_motion->components.front().direction, up = -scene.gravity.normalized();
+    const Vec3 along = dir - dir.dot(up) * up;
+    if (along.norm() < 1e-9) return std::nullopt;
+    return along.normalized();
+}
+
+/// the world corners of block i
+std::array<Vec3, 8> world_corners(const BlockDef& b) {
+    std::array<Vec3, 8> w;
+    for (size_t k = 0; k < 8; ++k) w[k] = b.orientation * b.corners[k] + b.position;
+    return w;
+}
+
+/// the free blocks grouped into layers by their bottom height (to 1 µm), bottom first, in the
+/// frame (along, across, up)
+std::vector<LayerBounds> layers_of(const Scene& scene, const Vec3& along) {
     const Vec3 up = -scene.gravity.normalized(), across = up.cross(along);
-    // layers by bottom height (to 1 µm), bottom first
     std::map<long long, std::vector<int>> by_bottom;
     for (size_t i = 0; i < scene.blocks.size(); ++i) {
         if (scene.blocks[i].fixed) continue;
         double zmin = INFINITY;
-        for (const auto& c : scene.blocks[i].corners) zmin = std::min(zmin, (scene.blocks[i].orientation * c + scene.blocks[i].position).dot(up));
+        for (const auto& p : world_corners(scene.blocks[i])) zmin = std::min(zmin, p.dot(up));
         by_bottom[std::llround(zmin * 1e6)].push_back(int(i));
     }
+    std::vector<LayerBounds> layers;
+    for (const auto& [key, ids] : by_bottom) {
+        LayerBounds l;
+        for (int i : ids) {
+            for (const auto& p : world_corners(scene.blocks[size_t(i)])) {
+                const double v[3] = {p.dot(along), p.dot(across), p.dot(up)};
+                for (int k = 0; k < 3; ++k) l.lo[k] = std::min(l.lo[k], v[k]), l.hi[k] = std::max(l.hi[k], v[k]);
+            }
+            l.mass += block_mass(scene, i);
+            ++l.blocks;
+            l.volume += mass_properties(scene.blocks[size_t(i)].corners, 1.0).volume;
+        }
+        layers.push_back(l);
+    }
+    return layers;
+}
+
+oracle::BlockStack stack_of(const Scene& scene, const std::vector<LayerBounds>& layers) {
     oracle::BlockStack stack;
     stack.g = gravity(scene);
-    for (const auto& [key, ids] : by_bottom) {
-        double lo[3] = {INFINITY, INFINITY, INFINITY}, hi[3] = {-INFINITY, -INFINITY, -INFINITY}, m = 0.0;
-        for (int i : ids) {
-            const BlockDef& b = scene.blocks[i];
-            for (const auto& c : b.corners) {
-                const Vec3 p = b.orientation * c + b.position;
-                const double v[3] = {p.dot(along), p.dot(across), p.dot(up)};
-                for (int k = 0; k < 3; ++k) lo[k] = std::min(lo[k], v[k]), hi[k] = std::max(hi[k], v[k]);
-            }
-            m += block_mass(scene, i);
-        }
-        stack.layers.push_back({hi[2] - lo[2], hi[0] - lo[0], hi[1] - lo[1], m});
-    }
+    for (const auto& l : layers) stack.layers.push_back({l.hi[2] - l.lo[2], l.hi[0] - l.lo[0], l.hi[1] - l.lo[1], l.mass});
     return stack;
+}
+
+}  // namespace
+
+oracle::BlockStack scene_stack(const Scene& scene) {
+    if (!scene.ground_motion) throw Error(scene.source + ": a pushover reference needs a [ground_motion] table");
+    if (scene.ground_motion->components.size() != 1)
+        throw Error(scene.source + ": a pushover reference needs a [ground_motion] of one record");
+    const auto along = push_direction(scene);
+    if (!along) throw Error(scene.source + ": a pushover reference needs a horizontal [ground_motion] direction");
+    return stack_of(scene, layers_of(scene, *along));
+}
+
+std::optional<oracle::BlockStack> centred_stack(const Scene& scene) {
+    const auto along = push_direction(scene);
+    if (!along) return std::nullopt;
+    const auto layers = layers_of(scene, *along);
+    if (layers.empty()) return std::nullopt;
+    const LayerBounds& first = layers.front();
+    const double height = layers.back().hi[2] - first.lo[2];
+    for (size_t k = 0; k < layers.size(); ++k) {
+        const LayerBounds& l = layers[k];
+        const double box = (l.hi[0] - l.lo[0]) * (l.hi[1] - l.lo[1]) * (l.hi[2] - l.lo[2]);
+        if (std::abs(l.volume - box) > 1e-3 * box) return std::nullopt;   // gaps, or blocks not square to the push
+        if (k > 0 && std::abs(l.lo[2] - layers[k - 1].hi[2]) > 1e-6 * height) return std::nullopt;   // not resting on the one below
+        // a course of several blocks turns as one only pushed out of its plane (in its plane its
+        // blocks rock and slide apart, which the layers do not model)
+        if (l.blocks > 1 && l.hi[0] - l.lo[0] > l.hi[1] - l.lo[1]) return std::nullopt;
+        for (int a : {0, 1})   // centred on the first layer's vertical axis
+            if (std::abs((l.lo[a] + l.hi[a]) - (first.lo[a] + first.hi[a])) > 0.02 * (first.hi[a] - first.lo[a]))
+                return std::nullopt;
+    }
+    // on a fixed block whose top is the first layer's bottom and which runs past it along the push
+    const Vec3 up = -scene.gravity.normalized();
+    for (const auto& b : scene.blocks) {
+        if (!b.fixed) continue;
+        double top = -INFINITY, lo = INFINITY, hi = -INFINITY;
+        for (const auto& p : world_corners(b)) {
+            top = std::max(top, p.dot(up));
+            lo = std::min(lo, p.dot(*along));
+            hi = std::max(hi, p.dot(*along));
+        }
+        if (std::abs(top - first.lo[2]) <= 1e-6 * height + 1e-3 * (first.hi[2] - first.lo[2]) && lo < first.lo[0] &&
+            hi > first.hi[0])
+            return stack_of(scene, layers);
+    }
+    return std::nullopt;
 }
 
 CaseAnalysis analyse_pushover(const Scene& scene, const std::vector<Sample>& s, ContactKind contact) {

@@ -2,7 +2,7 @@
 /// The analyses of the structure reference kinds (internal to compare/cases; use
 /// case_analysis.hpp).
 
-#include "analytic/stack_pushover.hpp"
+#include "cases/scene_stack.hpp"
 #include "cases/case_analysis.hpp"
 
 namespace cairn::cases {
@@ -10,9 +10,6 @@ namespace cairn::cases {
 /// kind "pushover": a stack under a ramped ground acceleration, judged on the a/g at which the
 /// reference block's rotation passes the threshold (value `threshold`, rad, default 0.05)
 CaseAnalysis analyse_pushover(const Scene& scene, const std::vector<Sample>& s, ContactKind contact);
-/// the stack of the scene's free blocks: blocks grouped into layers by their bottom height, each
-/// layer's width along the ground motion's direction and depth across it
-oracle::BlockStack scene_stack(const Scene& scene);
 /// the ground acceleration of the scene in g at time t (s)
 double ground_multiplier(const Scene& scene, double t);
 

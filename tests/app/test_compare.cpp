@@ -127,6 +127,32 @@ TEST_CASE("cairn compare runs a column on dem and Bullet and writes the comparis
     CHECK(md.find("](replay.html)") < md.find("## Energy"));
 }
 
+TEST_CASE("cairn compare says how much dem's joints lower a shaken stack's overturning multiplier", "[app][compare]") {
+    // the column of kColumn shaken along x: B/H = 0.4/1.2 about its base edge, which a joint of
+    // springs kn reaches only as it opens while the column leans (docs/validation.md)
+    const fs::path dir = fresh_dir("compare_stack");
+    {
+        std::ofstream f(dir / "column.toml");
+        f << kColumn << "[ground_motion]\ntime = [0.0, 0.3]\nacceleration = [0.0, 0.5]\n";
+    }
+    const auto r = run_cairn("compare " + (dir / "column.toml").string() + " --backends dem,bullet --jobs 2 --out " +
+                                 (dir / "report").string(), dir);
+    INFO(r.err);
+    REQUIRE(r.exit_code == 0);
+    const std::string md = read_file(dir / "report" / "report.md");
+    CHECK_THAT(md, Contains("For this stack of 3 layers under the ground motion, joints of kn = 3e+08 N/m³ alone lower "
+                            "the quasi-static overturning multiplier a/g from 0.3333 (rigid) to 0."));
+    // without the ground motion (the first test's column) there is no such sentence
+    const fs::path plain = dir / "plain.toml";
+    {
+        std::ofstream f(plain);
+        f << kColumn;
+    }
+    const auto q = run_cairn("compare " + plain.string() + " --backends dem,bullet --jobs 2 --out " + (dir / "plain").string(), dir);
+    REQUIRE(q.exit_code == 0);
+    CHECK_THAT(read_file(dir / "plain" / "report.md"), !Contains("For this stack"));
+}
+
 TEST_CASE("bare cairn prints the usage and the commands, exit 2", "[app][cli]") {
     const fs::path dir = fresh_dir("bare");
     const auto r = run_cairn("", dir);

@@ -1,0 +1,22 @@
+#pragma once
+/// The scene's free blocks as a stack of layers for the stack oracle (compare/analytic,
+/// BlockStack): the pushover reference's, and the compare report's estimate of what dem's
+/// compliant joints take off a rigid stack's overturning multiplier.
+
+#include <optional>
+
+#include "analytic/stack_pushover.hpp"
+#include "scene/scene.hpp"
+
+namespace cairn::cases {
+
+/// the stack of the scene's free blocks: blocks grouped into layers by their bottom height, each
+/// layer's width along the ground motion's direction and depth across it
+oracle::BlockStack scene_stack(const Scene& scene);
+/// the same, only where the free blocks form a centred stack along the scene's one horizontal
+/// record: full layers (no gaps), each resting on the one below, centred on the first's vertical
+/// axis (2 % of its width), a layer of several blocks pushed out of its plane, the first layer on
+/// a fixed block that runs past it along the push
+std::optional<oracle::BlockStack> centred_stack(const Scene& scene);
+
+}  // namespace cairn::cases

@@ -1,0 +1,79 @@
+// The scene's free blocks read as a centred stack (compare/cases/scene_stack.hpp): what the compare
+// report's estimate of the joints' compliance applies to, and what it refuses.
+#include <catch2/catch.hpp>
+
+#include "cases/scene_stack.hpp"
+#include "support/scene_builder.hpp"
+
+using namespace cairn;
+
+namespace {
+
+/// three drums 0.4 × 0.4 × 0.5 m on a 2 m slab, shaken along `direction`
+Scene column(const Vec3& direction = Vec3::UnitX()) {
+    Scene s = test::stone_scene(0.8);
+    for (int i = 0; i < 3; ++i) test::add_box(s, "D" + std::to_string(i), Vec3(0.4, 0.4, 0.5), Vec3(0, 0, 0.25 + 0.5 * i), false);
+    test::add_box(s, "G", Vec3(2, 2, 0.5), Vec3(0, 0, -0.25), true);
+    GroundMotion g;
+    GroundComponent c;
+    c.direction = direction;
+    g.components.push_back(c);
+    s.ground_motion = g;
+    return s;
+}
+
+/// a course of two bricks 0.4 long (x) × 0.2 thick (y) × 0.2 high on the column's slab
+Scene course(const Vec3& direction) {
+    Scene s = column(direction);
+    s.blocks.erase(s.blocks.begin(), s.blocks.begin() + 3);
+    test::add_box(s, "L", Vec3(0.4, 0.2, 0.2), Vec3(-0.2, 0, 0.1), false);
+    test::add_box(s, "R", Vec3(0.4, 0.2, 0.2), Vec3(0.2, 0, 0.1), false);
+    return s;
+}
+
+}  // namespace
+
+TEST_CASE("scene stack: a centred column on its base is a stack of its drums", "[compare][stack]") {
+    const auto stack = cases::centred_stack(column());
+    REQUIRE(stack);
+    REQUIRE(stack->layers.size() == 3);
+    CHECK(stack->rigid_multiplier() == Approx(0.4 / 1.5));   // B/H about the base edge
+    CHECK(stack->layers[1].mass == Approx(2600 * 0.4 * 0.4 * 0.5));
+}
+
+TEST_CASE("scene stack: what is not a centred stack under one horizontal record is refused", "[compare][stack]") {
+    SECTION("no ground motion") {
+        Scene s = column();
+        s.ground_motion.reset();
+        CHECK_FALSE(cases::centred_stack(s));
+    }
+    SECTION("a vertical record") { CHECK_FALSE(cases::centred_stack(column(Vec3::UnitZ()))); }
+    SECTION("a drum set off the axis by 5 % of the width") {
+        Scene s = column();
+        s.blocks[1].position.x() += 0.02;
+        CHECK_FALSE(cases::centred_stack(s));
+    }
+    SECTION("a drum lifted off the one below") {
+        Scene s = column();
+        s.blocks[2].position.z() += 0.01;
+        CHECK_FALSE(cases::centred_stack(s));
+    }
+    SECTION("no fixed block under the first drum") {
+        Scene s = column();
+        s.blocks[3].position.z() -= 0.1;
+        CHECK_FALSE(cases::centred_stack(s));
+    }
+    SECTION("a course with a gap") {
+        Scene s = course(Vec3::UnitY());
+        s.blocks[1].position.x() -= 0.05;   // the left brick 5 cm off the right one
+        CHECK_FALSE(cases::centred_stack(s));
+    }
+}
+
+TEST_CASE("scene stack: a course of bricks is a layer pushed out of its plane, not in it", "[compare][stack]") {
+    const auto out_of_plane = cases::centred_stack(course(Vec3::UnitY()));
+    REQUIRE(out_of_plane);
+    CHECK(out_of_plane->layers.size() == 1);
+    CHECK(out_of_plane->rigid_multiplier() == Approx(0.2 / 0.2));   // t/H of the one course
+    CHECK_FALSE(cases::centred_stack(course(Vec3::UnitX())));
+}
