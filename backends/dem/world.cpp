@@ -126,11 +126,11 @@ void World::refresh_if_due() {
         // scheme also refreshes before a block turns by kRefreshTurn (the refresh leaves out the
         // sides that cannot face each other within that turn)
         const double spin = b.deformable ? 0.0 : b.body.omega().norm();   // rad/s
-        double speed = b.body.v.norm() + b.r_max * spin;                 // m/s
-        if (b.deformable) {
-            speed = 0.0;
+        double speed = 0.0;   // m/s, of the block's fastest point
+        if (b.deformable)
             for (const auto& vn : b.v) speed = std::max(speed, vn.norm());
-        }
+        else
+            speed = b.body.v.norm() + b.r_max * spin;
         const double move = speed * dt_;
         fastest = std::max(fastest, move);
         const double turn = b.turn_since_refresh();   // rad

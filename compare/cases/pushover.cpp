@@ -57,7 +57,7 @@ std::optional<Vec3> push_direction(const Scene& scene) {
     return along.normalized();
 }
 
-/// the world corners of block i
+/// the world corners of a block as placed
 std::array<Vec3, 8> world_corners(const BlockDef& b) {
     std::array<Vec3, 8> w;
     for (size_t k = 0; k < 8; ++k) w[k] = b.orientation * b.corners[k] + b.position;
