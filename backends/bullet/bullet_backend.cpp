@@ -144,7 +144,9 @@ void BulletBackend::build(const Scene& scene, const RunOptions& options) {
     EngineSettings settings(scene_, "bullet");
     matched_ = contact_mode(settings, options) == "matched";
     const long long iterations = settings.integer("iterations", 50, 1);
-    const double margin = settings.number("margin", 1e-3, 0.0);
+    // matched springs read the depth of the shapes grown by the margin (a hull's lies outside its
+    // corners): 1e-3 m there is a millimetre of spring at every touching joint (docs/backends.md)
+    const double margin = settings.number("margin", matched_ ? 1e-5 : 1e-3, 0.0);
     const long long directions = settings.integer("friction_directions", 2, 1);
     const double restitution_threshold = settings.number("restitution_threshold", 0.2, 0.0);
     settings.finish();
