@@ -1,9 +1,11 @@
 // a stack of blocks (column, wall) under a slowly ramped uniform ground acceleration: the a/g at
-// which it overturns
+// which it overturns; and the scene's free blocks read as such a stack (scene_stack.hpp)
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <map>
 #include <optional>
+#include <vector>
 
 #include "cases/case_kind.hpp"
 #include "cases/case_util.hpp"
