@@ -1,7 +1,6 @@
 // a stack of blocks (column, wall) under a slowly ramped uniform ground acceleration: the a/g at
 // which it overturns; and the scene's free blocks read as such a stack (scene_stack.hpp)
 #include <algorithm>
-#include <array>
 #include <cmath>
 #include <map>
 #include <optional>
@@ -13,6 +12,7 @@
 #include "output/number_format.hpp"
 #include "error.hpp"
 #include "geometry/hexahedron.hpp"
+#include "geometry/overlap.hpp"
 
 namespace cairn::cases {
 
@@ -59,12 +59,8 @@ std::optional<Vec3> push_direction(const Scene& scene) {
     return along.normalized();
 }
 
-/// the world corners of a block as placed
-std::array<Vec3, 8> world_corners(const BlockDef& b) {
-    std::array<Vec3, 8> w;
-    for (size_t k = 0; k < 8; ++k) w[k] = b.orientation * b.corners[k] + b.position;
-    return w;
-}
+/// the world corners of a block as placed, m
+Corners world_corners(const BlockDef& b) { return placed_corners(b.corners, b.position, b.orientation); }
 
 /// the free blocks grouped into layers by their bottom height (to 1 µm), bottom first, in the
 /// frame (along, across, up)
