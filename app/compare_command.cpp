@@ -93,6 +93,11 @@ int compare_command(const CompareOptions& options) {
     // on a terminal one progress line for all runs instead of a line per run; nothing otherwise
     plan.quiet = true;
     const bool show = !options.quiet && stderr_is_terminal();
+    if (!options.quiet) {
+        std::vector<validation::Variant> variants;
+        for (const auto& r : c.runs) variants.push_back(r.variant);
+        std::cerr << scene_compare::long_run_note(c.scene, variants);
+    }
     plan.cases.push_back(std::move(c));
 
     // the report is built beside the old one and swapped in whole: compare owns these entries of

@@ -3,6 +3,9 @@
 #include <Eigen/Dense>
 #include <algorithm>
 #include <cmath>
+#include <functional>
+
+#include "winkler_joint.hpp"
 
 namespace cairn::oracle {
 
@@ -29,6 +32,7 @@ double joint_moment(double phi, double n, double b, double d, double kn) {
 }  // namespace
 
 double BlockStack::rigid_multiplier() const {
+    const double along = std::abs(std::cos(push_angle)), across = std::abs(std::sin(push_angle));
     double best = INFINITY;
     for (size_t j = 0; j < layers.size(); ++j) {
         double m = 0.0, mz = 0.0, z = 0.0;
@@ -37,7 +41,9 @@ double BlockStack::rigid_multiplier() const {
             mz += layers[i].mass * (z + 0.5 * layers[i].height);
             z += layers[i].height;
         }
-        best = std::min(best, 0.5 * joint_width(layers, j) / (mz / m));
+        // the resultant's offset λ·h·(cos, sin) reaches the joint's side or corner
+        const double reach = std::max(along / (0.5 * joint_width(layers, j)), across / (0.5 * joint_depth(layers, j)));
+        best = std::min(best, 1.0 / (reach * mz / m));
     }
     return best;
 }
@@ -48,12 +54,54 @@ struct PathPoint {
     double lambda = 0.0, top_rotation = 0.0;
 };
 
-/// continuation along the quasi-static path: base rotation φ0 given, (λ, φ1 … φn−1) solved
+/// Newton's method on full(x) = 0 from x, with a forward-difference Jacobian (steps of 1e-9 of
+/// each unknown's size, at least 1e-9 scale[c]), until the residual is below 1e-10 of
+/// `force_scale` (N·m) or a step moves x by less than 1e-13; false when the residual is then
+/// (or after 50 iterations) above 1e-6 of it: the path has lost the equilibrium
+bool newton(const std::function<Eigen::VectorXd(const Eigen::VectorXd&)>& full, Eigen::VectorXd& x,
+            const Eigen::VectorXd& scale, double force_scale) {
+    const long n = x.size();
+    for (int it = 0; it < 50; ++it) {
+        const Eigen::VectorXd r = full(x);
+        if (r.norm() < 1e-10 * force_scale) return true;
+        Eigen::MatrixXd jac(n, n);
+        for (long c = 0; c < n; ++c) {
+            Eigen::VectorXd y = x;
+            const double h = 1e-9 * std::max(std::abs(x[c]), scale[c]);
+            y[c] += h;
+            jac.col(c) = (full(y) - r) / h;
+        }
+        const Eigen::VectorXd dx = jac.fullPivLu().solve(-r);
+        x += dx;
+        if (dx.norm() < 1e-13) break;
+    }
+    return full(x).norm() < 1e-6 * force_scale;
+}
+
+/// the base joint's rotations of the continuation: geometric from a hundredth of the smallest
+/// rotation that lifts a joint's edge (θ = 2N/(kn·d·b²): at any kn the first steps find the joints
+/// closed, where the path starts from λ = 0) to 0.3 rad, 3000 of them
+std::vector<double> base_rotations(const std::vector<StackLayer>& l, const std::vector<double>& nforce, double kn) {
+    double lift = INFINITY;
+    for (size_t j = 0; j < l.size(); ++j) {
+        const double b = std::min(joint_width(l, j), joint_depth(l, j));
+        lift = std::min(lift, 2.0 * nforce[j] / (kn * std::max(joint_width(l, j), joint_depth(l, j)) * b * b));
+    }
+    const double first = std::min(0.01 * lift, 1e-4), last = 0.3;
+    const int steps = 3000;
+    std::vector<double> r;
+    for (int s = 0; s < steps; ++s) r.push_back(first * std::pow(last / first, double(s) / (steps - 1)));
+    return r;
+}
+
+/// continuation along the quasi-static path: base rotation φ0 given, (λ, φ1 … φn−1) solved;
+/// empty when a step does not converge
 std::vector<PathPoint> winkler_path(const std::vector<StackLayer>& l, double g, double kn) {
     const size_t n = l.size();
     std::vector<double> zb(n + 1, 0.0), w(n), nforce(n, 0.0);
     for (size_t i = 0; i < n; ++i) zb[i + 1] = zb[i] + l[i].height, w[i] = l[i].mass * g;
     for (size_t j = n; j-- > 0;) nforce[j] = w[j] + (j + 1 < n ? nforce[j + 1] : 0.0);
+    const double force_scale = nforce[0] * joint_width(l, 0);   // N·m, the moments' size
     // residual of joint j's moment balance for joint rotations phi and multiplier lam
     auto residual = [&](const Eigen::VectorXd& phi, double lam) {
         Eigen::VectorXd r(n);
@@ -74,28 +122,16 @@ std::vector<PathPoint> winkler_path(const std::vector<StackLayer>& l, double g, 
     std::vector<PathPoint> path;
     // unknowns x = (λ, φ1 … φn−1) for a given φ0
     Eigen::VectorXd x = Eigen::VectorXd::Zero(n);
-    const double phi_end = 0.3, steps = 3000;
-    for (int s = 1; s <= steps; ++s) {
-        const double phi0 = phi_end * std::pow(double(s) / steps, 2.0);   // fine steps near zero
+    for (const double phi0 : base_rotations(l, nforce, kn)) {
         auto full = [&](const Eigen::VectorXd& y) {
             Eigen::VectorXd phi(n);
             phi[0] = phi0;
             for (size_t k = 1; k < n; ++k) phi[k] = y[k];
             return residual(phi, y[0]);
         };
-        for (int it = 0; it < 50; ++it) {
-            const Eigen::VectorXd r = full(x);
-            Eigen::MatrixXd jac(n, n);
-            for (size_t c = 0; c < n; ++c) {
-                Eigen::VectorXd y = x;
-                const double h = 1e-9 * std::max(1.0, std::abs(x[c]));
-                y[c] += h;
-                jac.col(c) = (full(y) - r) / h;
-            }
-            const Eigen::VectorXd dx = jac.fullPivLu().solve(-r);
-            x += dx;
-            if (dx.norm() < 1e-13) break;
-        }
+        Eigen::VectorXd scale = Eigen::VectorXd::Constant(long(n), phi0);   // the joints' rotations
+        scale[0] = 1.0;                                                      // λ
+        if (!newton(full, x, scale, force_scale)) return {};
         double top = phi0;
         for (size_t k = 1; k < n; ++k) top += x[k];
         path.push_back({x[0], top});
@@ -103,20 +139,95 @@ std::vector<PathPoint> winkler_path(const std::vector<StackLayer>& l, double g, 
     return path;
 }
 
+/// the same path for a push at `angle` (rad) to the layers' width axis: every joint leans by a
+/// vector φj (its closure grows by φj·r); given the base joint's lean |φ0|, the unknowns are
+/// (λ, the direction of φ0, φ1 … φn−1) and each joint's two moment balances the equations
+std::vector<PathPoint> winkler_path_oblique(const std::vector<StackLayer>& l, double g, double kn, double angle) {
+    using V2 = Eigen::Vector2d;
+    const size_t n = l.size();
+    const V2 push(std::cos(angle), std::sin(angle));
+    std::vector<double> zb(n + 1, 0.0), w(n), nforce(n, 0.0);
+    for (size_t i = 0; i < n; ++i) zb[i + 1] = zb[i] + l[i].height, w[i] = l[i].mass * g;
+    for (size_t j = n; j-- > 0;) nforce[j] = w[j] + (j + 1 < n ? nforce[j + 1] : 0.0);
+    const double force_scale = nforce[0] * joint_width(l, 0);   // N·m, the moments' size
+    auto residual = [&](const std::vector<V2>& phi, double lam) {
+        Eigen::VectorXd r(2 * n);
+        std::vector<V2> theta(n);   // each layer's lean, the joints' below summed
+        V2 acc = V2::Zero();
+        for (size_t k = 0; k < n; ++k) theta[k] = acc += phi[k];
+        for (size_t j = 0; j < n; ++j) {
+            V2 m = V2::Zero();
+            for (size_t i = j; i < n; ++i) {
+                V2 dx = 0.5 * l[i].height * theta[i];   // centroid i's lean over joint j
+                for (size_t k = j; k < i; ++k) dx += l[k].height * theta[k];
+                m += w[i] * (lam * (zb[i] + 0.5 * l[i].height - zb[j]) * push + dx);
+            }
+            r.segment<2>(2 * long(j)) = winkler_joint_moment(phi[j], nforce[j], 0.5 * joint_width(l, j),
+                                                            0.5 * joint_depth(l, j), kn) - m;
+        }
+        return r;
+    };
+    // x = (λ, ψ, φ1 … φn−1) with φ0 = s·(cos ψ, sin ψ); the closed base joint first leans along
+    // I⁻¹·push (I its second moments: a rectangle's grow with the square of its half-sizes)
+    Eigen::VectorXd x = Eigen::VectorXd::Zero(long(2 * n));
+    const double a0 = joint_width(l, 0), c0 = joint_depth(l, 0);
+    x[1] = std::atan2(push.y() / (c0 * c0), push.x() / (a0 * a0));
+    std::vector<PathPoint> path;
+    for (const double phi0 : base_rotations(l, nforce, kn)) {
+        auto full = [&](const Eigen::VectorXd& y) {
+            std::vector<V2> phi(n);
+            phi[0] = phi0 * V2(std::cos(y[1]), std::sin(y[1]));
+            for (size_t k = 1; k < n; ++k) phi[k] = y.segment<2>(2 * long(k));
+            return residual(phi, y[0]);
+        };
+        Eigen::VectorXd scale = Eigen::VectorXd::Constant(long(2 * n), phi0);   // the joints' leans
+        scale[0] = scale[1] = 1.0;   // λ and the base lean's direction (rad)
+        if (!newton(full, x, scale, force_scale)) return {};
+        V2 top = phi0 * V2(std::cos(x[1]), std::sin(x[1]));
+        for (size_t k = 1; k < n; ++k) top += x.segment<2>(2 * long(k));
+        path.push_back({x[0], top.norm()});
+    }
+    return path;
+}
+
+/// a push along one of the layers' axes takes the one-direction path (swapping the axes for the
+/// second); any other angle the two-direction one
+std::vector<PathPoint> stack_path(const BlockStack& stack, double kn) {
+    const double c = std::cos(stack.push_angle), s = std::sin(stack.push_angle);
+    if (std::abs(s) < 1e-12) return winkler_path(stack.layers, stack.g, kn);
+    if (std::abs(c) < 1e-12) {
+        std::vector<StackLayer> turned = stack.layers;
+        for (auto& t : turned) std::swap(t.width, t.depth);
+        return winkler_path(turned, stack.g, kn);
+    }
+    return winkler_path_oblique(stack.layers, stack.g, kn, stack.push_angle);
+}
+
 }  // namespace
 
-double BlockStack::winkler_multiplier(double kn) const {
-    double best = 0.0;
-    for (const auto& p : winkler_path(layers, g, kn)) best = std::max(best, p.lambda);
-    return best;
+namespace {
+
+/// the highest point of the path; NaN in both if the path failed or rises to its end (no peak)
+PathPoint path_peak(const std::vector<PathPoint>& path) {
+    size_t best = 0;
+    for (size_t i = 1; i < path.size(); ++i)
+        if (path[i].lambda > path[best].lambda) best = i;
+    if (path.empty() || best + 1 == path.size()) return {NAN, NAN};
+    return path[best];
 }
 
-double BlockStack::winkler_peak_rotation(double kn) const {
-    PathPoint best;
-    for (const auto& p : winkler_path(layers, g, kn))
-        if (p.lambda > best.lambda) best = p;
-    return best.top_rotation;
+/// the peak of the stack's path, NaN where it would pass the rigid multiplier (which no joint of
+/// finite stiffness reaches: a path lost to round-off at extreme kn)
+PathPoint stack_peak(const BlockStack& stack, double kn) {
+    const PathPoint p = path_peak(stack_path(stack, kn));
+    return p.lambda <= stack.rigid_multiplier() ? p : PathPoint{NAN, NAN};
 }
+
+}  // namespace
+
+double BlockStack::winkler_multiplier(double kn) const { return stack_peak(*this, kn).lambda; }
+
+double BlockStack::winkler_peak_rotation(double kn) const { return stack_peak(*this, kn).top_rotation; }
 
 double BlockStack::rigid_ramp_time(const std::function<double(double)>& lambda, double rotation, double until) const {
     // the monolith: mass m, centre (b, h) from the leading base edge, inertia i about that edge;

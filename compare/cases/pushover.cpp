@@ -108,38 +108,71 @@ oracle::BlockStack scene_stack(const Scene& scene) {
     return stack_of(scene, layers_of(scene, *along));
 }
 
+namespace {
+
+/// the horizontal direction of the first free block's first axis that is not its most vertical
+/// one: the layers' first axis when the blocks stand square to each other
+std::optional<Vec3> layer_axis(const Scene& scene) {
+    const Vec3 up = -scene.gravity.normalized();
+    for (const auto& b : scene.blocks) {
+        if (b.fixed) continue;
+        const Eigen::Matrix3d r = b.orientation.toRotationMatrix();
+        int vertical = 0;
+        for (int k = 1; k < 3; ++k)
+            if (std::abs(r.col(k).dot(up)) > std::abs(r.col(vertical).dot(up))) vertical = k;
+        const Vec3 a = r.col(vertical == 0 ? 1 : 0);
+        const Vec3 flat = a - a.dot(up) * up;
+        if (flat.norm() < 1e-9) return std::nullopt;
+        return flat.normalized();
+    }
+    return std::nullopt;
+}
+
+}  // namespace
+
 std::optional<oracle::BlockStack> centred_stack(const Scene& scene) {
-    const auto along = push_direction(scene);
-    if (!along) return std::nullopt;
-    const auto layers = layers_of(scene, *along);
+    const auto push = push_direction(scene);
+    const auto axis = layer_axis(scene);
+    if (!push || !axis) return std::nullopt;
+    const Vec3 up = -scene.gravity.normalized(), across = up.cross(*axis);
+    const double angle = std::atan2(push->dot(across), push->dot(*axis));
+    // along one of the layers' axes (0 or 1), or -1 for a push at an angle to both
+    const int push_axis = std::abs(std::sin(angle)) < 1e-9 ? 0 : std::abs(std::cos(angle)) < 1e-9 ? 1 : -1;
+    const auto layers = layers_of(scene, *axis);
     if (layers.empty()) return std::nullopt;
     const LayerBounds& first = layers.front();
     const double height = layers.back().hi[2] - first.lo[2];
     for (size_t k = 0; k < layers.size(); ++k) {
         const LayerBounds& l = layers[k];
         const double box = (l.hi[0] - l.lo[0]) * (l.hi[1] - l.lo[1]) * (l.hi[2] - l.lo[2]);
-        if (std::abs(l.volume - box) > 1e-3 * box) return std::nullopt;   // gaps, or blocks not square to the push
+        if (std::abs(l.volume - box) > 1e-3 * box) return std::nullopt;   // gaps, or blocks not square to each other
         if (k > 0 && std::abs(l.lo[2] - layers[k - 1].hi[2]) > 1e-6 * height) return std::nullopt;   // not resting on the one below
-        // a course of several blocks turns as one only pushed out of its plane (in its plane its
-        // blocks rock and slide apart, which the layers do not model)
-        if (l.blocks > 1 && l.hi[0] - l.lo[0] > l.hi[1] - l.lo[1]) return std::nullopt;
+        // a course of several blocks turns as one only pushed out of its plane (in its plane, or
+        // at an angle to it, its blocks rock and slide apart, which the layers do not model)
+        if (l.blocks > 1 && (push_axis < 0 || l.hi[push_axis] - l.lo[push_axis] > l.hi[1 - push_axis] - l.lo[1 - push_axis]))
+            return std::nullopt;
         for (int a : {0, 1})   // centred on the first layer's vertical axis
             if (std::abs((l.lo[a] + l.hi[a]) - (first.lo[a] + first.hi[a])) > 0.02 * (first.hi[a] - first.lo[a]))
                 return std::nullopt;
     }
     // on a fixed block whose top is the first layer's bottom and which runs past it along the push
-    const Vec3 up = -scene.gravity.normalized();
+    // (past both its sides for a push at an angle: it tips over a corner)
     for (const auto& b : scene.blocks) {
         if (!b.fixed) continue;
-        double top = -INFINITY, lo = INFINITY, hi = -INFINITY;
+        double top = -INFINITY, lo[2] = {INFINITY, INFINITY}, hi[2] = {-INFINITY, -INFINITY};
         for (const auto& p : world_corners(b)) {
             top = std::max(top, p.dot(up));
-            lo = std::min(lo, p.dot(*along));
-            hi = std::max(hi, p.dot(*along));
+            const double v[2] = {p.dot(*axis), p.dot(across)};
+            for (int a : {0, 1}) lo[a] = std::min(lo[a], v[a]), hi[a] = std::max(hi[a], v[a]);
         }
-        if (std::abs(top - first.lo[2]) <= 1e-6 * height + 1e-3 * (first.hi[2] - first.lo[2]) && lo < first.lo[0] &&
-            hi > first.hi[0])
-            return stack_of(scene, layers);
+        bool past = true;
+        for (int a : {0, 1})
+            if (push_axis < 0 || push_axis == a) past = past && lo[a] < first.lo[a] && hi[a] > first.hi[a];
+        if (std::abs(top - first.lo[2]) <= 1e-6 * height + 1e-3 * (first.hi[2] - first.lo[2]) && past) {
+            oracle::BlockStack stack = stack_of(scene, layers);
+            stack.push_angle = angle;
+            return stack;
+        }
     }
     return std::nullopt;
 }

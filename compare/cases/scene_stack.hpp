@@ -13,10 +13,12 @@ namespace cairn::cases {
 /// the stack of the scene's free blocks: blocks grouped into layers by their bottom height, each
 /// layer's width along the ground motion's direction and depth across it
 oracle::BlockStack scene_stack(const Scene& scene);
-/// the same, only where the free blocks form a centred stack along the scene's one horizontal
-/// record: full layers (no gaps), each resting on the one below, centred on the first's vertical
-/// axis (2 % of its width), a layer of several blocks pushed out of its plane, the first layer on
-/// a fixed block that runs past it along the push
+/// the same, only where the free blocks form a centred stack under the scene's one horizontal
+/// record: full layers (no gaps) of blocks square to each other, each resting on the one below,
+/// centred on the first's vertical axis (2 % of its width), a layer of several blocks only pushed
+/// out of its plane, the first layer on a fixed block that runs past it along the push (past both
+/// its sides for a push at an angle to the layers' axes). Its layers' width is along the first
+/// free block's first horizontal axis, and push_angle the push's angle to it.
 std::optional<oracle::BlockStack> centred_stack(const Scene& scene);
 
 }  // namespace cairn::cases

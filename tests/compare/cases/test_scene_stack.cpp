@@ -2,12 +2,17 @@
 // report's estimate of the joints' compliance applies to, and what it refuses.
 #include <catch2/catch.hpp>
 
+#include <cmath>
+
 #include "cases/scene_stack.hpp"
+#include "geometry/hexahedron.hpp"
 #include "support/scene_builder.hpp"
 
 using namespace cairn;
 
 namespace {
+
+constexpr double kPi = 3.14159265358979323846;
 
 /// three drums 0.4 × 0.4 × 0.5 m on a 2 m slab, shaken along `direction`
 Scene column(const Vec3& direction = Vec3::UnitX()) {
@@ -76,4 +81,35 @@ TEST_CASE("scene stack: a course of bricks is a layer pushed out of its plane, n
     CHECK(out_of_plane->layers.size() == 1);
     CHECK(out_of_plane->rigid_multiplier() == Approx(0.2 / 0.2));   // t/H of the one course
     CHECK_FALSE(cases::centred_stack(course(Vec3::UnitX())));
+}
+
+TEST_CASE("scene stack: a column shaken at an angle to its faces tips over a corner", "[compare][stack]") {
+    // 30° from x: the resultant's offset λ·H·(cos 30°, sin 30°) reaches the side x = B/2 first,
+    // at λ = (B/2)/(H·cos 30°) = 0.2/(0.75·0.8660)
+    const double c = std::cos(kPi / 6), s = std::sin(kPi / 6);
+    const auto oblique = cases::centred_stack(column(Vec3(c, s, 0)));
+    REQUIRE(oblique);
+    CHECK(oblique->push_angle == Approx(kPi / 6));
+    CHECK(oblique->rigid_multiplier() == Approx(0.2 / (0.75 * c)));
+    // the same column and slab turned 30° about the vertical and shaken along their x axis: the
+    // push is along the drums' faces again
+    Scene turned = column(Vec3(c, s, 0));
+    for (auto& b : turned.blocks) {
+        b.orientation = Quat(Eigen::AngleAxisd(kPi / 6, Vec3::UnitZ()));
+        b.position = b.orientation * b.position;
+    }
+    const auto along = cases::centred_stack(turned);
+    REQUIRE(along);
+    CHECK(std::abs(std::sin(along->push_angle)) < 1e-9);
+    CHECK(along->rigid_multiplier() == Approx(0.4 / 1.5));
+    // refused: a course of bricks shaken at an angle to its plane, and a column whose slab does not
+    // run past its first drum across the push (it would tip over the slab's edge)
+    CHECK_FALSE(cases::centred_stack(course(Vec3(s, c, 0))));
+    auto narrow = [](const Vec3& direction) {
+        Scene n = column(direction);
+        n.blocks[3].corners = box_corners(Vec3(2, 0.4, 0.5));   // 2 m along x, as wide as the drums across
+        return n;
+    };
+    CHECK_FALSE(cases::centred_stack(narrow(Vec3(c, s, 0))));
+    CHECK(cases::centred_stack(narrow(Vec3::UnitX())));   // pushed along x it runs past the drum
 }
