@@ -5,6 +5,7 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <mutex>
 
 #include "bench/trade_point.hpp"
 #include "bench/trade_sweep.hpp"
@@ -92,11 +93,13 @@ TEST_CASE("bench trade: a rerun runs only the points the run layer has not kept"
     b.point = pt("bullet-matched", "kn=3e+07 dt=0.0001", 0.0, NAN);
     c.point = pt("ode-matched", "kn=3e+07 dt=0.0001", 0.0, NAN);
     std::vector<std::string> made;
+    std::mutex made_lock;   // two points run at a time: their backends are made on two threads
     std::vector<BackendInfo> make;
     for (const std::string name : {"dem", "bullet", "ode"}) {
         BackendInfo b;
         b.name = name;
-        b.make = [&made, name]() -> std::unique_ptr<Backend> {
+        b.make = [&made, &made_lock, name]() -> std::unique_ptr<Backend> {
+            const std::lock_guard<std::mutex> hold(made_lock);
             made.push_back(name);
             throw Error("test: " + name + " refuses");
         };
