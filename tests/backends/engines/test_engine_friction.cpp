@@ -150,20 +150,30 @@ TEST_CASE("reference engines: a twisted cube holds until the friction at its fac
     CHECK(threshold == Approx(1.0 / (std::sqrt(2.0) * kSquareMeanRadius)).epsilon(0.012));
 }
 
+namespace {
+
+/// a scene for blocks sliding on stone: mu = 0.5, kn = ks = 1e10 N/m³, started settled, with
+/// contact damping ζ = 0.05 for dem (undamped, its elastic-Coulomb joints flutter while they
+/// slide: the blocks hop by up to 1 cm, docs/dem.md, "Flutter of undamped sliding contact")
+Scene sliding_scene(const std::string& name) {
+    Scene s = base_scene(name);
+    s.contact.kn = s.contact.ks = 1e10;
+    s.contact.friction = 0.5;
+    s.contact.damping_rule = ContactDampingRule::ratio;
+    s.contact.damping = 0.05;
+    s.run.settle = true;
+    return s;
+}
+
+}  // namespace
+
 TEST_CASE("every backend: three cubes pushed along a row slide together at (F - 3 mu W) / 3m and stay down",
           "[engines][friction]") {
     const std::string engine = GENERATE(from_range(all_backend_names()));
     CAPTURE(engine);
     // three 0.4 m cubes side by side on a fixed base (mu = 0.5, kn = ks = 1e10 N/m³), the first
     // pushed along the row by 1.5 times the row's friction, 0.1 m above the base
-    Scene s = base_scene("friction_row");
-    s.contact.kn = s.contact.ks = 1e10;
-    s.contact.friction = 0.5;
-    // dem: with contact damping. Undamped, its elastic-Coulomb joints flutter while they slide
-    // (the blocks hop by up to 1 cm: docs/dem.md, "Flutter of undamped sliding contact")
-    s.contact.damping_rule = ContactDampingRule::ratio;
-    s.contact.damping = 0.05;
-    s.run.settle = true;
+    Scene s = sliding_scene("friction_row");
     for (int i = 0; i < 3; ++i) add_box(s, std::string(1, char('A' + i)), Vec3(0.4, 0.4, 0.4), Vec3(0.4 * i, 0, 0.2), false);
     add_box(s, "G", Vec3(4.0, 2.0, 0.4), Vec3(0.8, 0, -0.2), true);
     const double m = 2600.0 * 0.064, weight = m * g;
@@ -216,12 +226,7 @@ TEST_CASE("every backend: a block riding on a pushed block moves with it at (F -
     // two 0.5 m cubes stacked on a fixed base (mu = 0.5, kn = ks = 1e10 N/m³, ζ 0.05), the lower
     // one pushed at its centre by 3 mu W: the pair slides at a = (F - 2 mu W)/(2m) = 0.5 mu g, and
     // the upper one needs m a = 0.5 mu W of friction to ride along, half its limit
-    Scene s = base_scene("friction_rider");
-    s.contact.kn = s.contact.ks = 1e10;
-    s.contact.friction = 0.5;
-    s.contact.damping_rule = ContactDampingRule::ratio;
-    s.contact.damping = 0.05;
-    s.run.settle = true;
+    Scene s = sliding_scene("friction_rider");
     add_box(s, "L", Vec3(0.5, 0.5, 0.5), Vec3(0, 0, 0.25), false);
     add_box(s, "U", Vec3(0.5, 0.5, 0.5), Vec3(0, 0, 0.75), false);
     add_box(s, "G", Vec3(6.0, 2.0, 0.4), Vec3(2.0, 0, -0.2), true);
