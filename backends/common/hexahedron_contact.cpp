@@ -140,10 +140,18 @@ std::vector<HexContact> hexahedron_contacts(const Corners& ca, const Corners& cb
         }
     }
 
-    // edge-edge axes
+    // edge-edge axes. Parallel edges share an axis and its depth (a box has four edges along each
+    // direction): of the pairs within round-off of the least depth, the one whose segments come
+    // closest is the pair that touches (the first found could be a far edge, and the contact point
+    // between far edges puts the force at the wrong place: its moment then does work the spring
+    // does not store)
+    struct EdgePair {
+        int a, b;
+        double depth;
+        Vec3 axis;   // unit, pushes A away from B
+    };
+    std::vector<EdgePair> pairs;
     double edge_depth = kInf;
-    Vec3 edge_axis = Vec3::Zero();
-    int edge_a = -1, edge_b = -1;
     for (int i = 0; i < 12; ++i)
         for (int j = 0; j < 12; ++j) {
             Vec3 da = ca[kEdges[i][1]] - ca[kEdges[i][0]];
@@ -157,45 +165,65 @@ std::vector<HexContact> hexahedron_contacts(const Corners& ca, const Corners& cb
             double push_a_up = hi_b - lo_a, push_a_down = hi_a - lo_b;
             if (push_a_up < 0 || push_a_down < 0) return {};
             double depth = std::min(push_a_up, push_a_down);
-            if (depth < edge_depth) {
-                edge_depth = depth;
-                edge_axis = push_a_up <= push_a_down ? axis : Vec3(-axis);
-                edge_a = i;
-                edge_b = j;
-            }
+            pairs.push_back({i, j, depth, push_a_up <= push_a_down ? axis : Vec3(-axis)});
+            edge_depth = std::min(edge_depth, depth);
         }
-
-    // faces win unless an edge pair overlaps clearly less (the usual 5 % bias of box colliders)
-    if (edge_a >= 0 && edge_depth < 0.95 * face_depth - 1e-9 * size) {
+    int edge_a = -1;
+    Vec3 edge_axis = Vec3::Zero(), edge_pa = Vec3::Zero(), edge_pb = Vec3::Zero();
+    double edge_gap = kInf;
+    for (const EdgePair& e : pairs) {
+        if (e.depth > edge_depth + 1e-9 * size) continue;
         Vec3 pa, pb;
-        closest_points(ca[kEdges[edge_a][0]], ca[kEdges[edge_a][1]], cb[kEdges[edge_b][0]], cb[kEdges[edge_b][1]],
-                       pa, pb);
-        return {{0.5 * (pa + pb), edge_axis, edge_depth}};
+        closest_points(ca[kEdges[e.a][0]], ca[kEdges[e.a][1]], cb[kEdges[e.b][0]], cb[kEdges[e.b][1]], pa, pb);
+        if ((pa - pb).norm() < edge_gap) {
+            edge_gap = (pa - pb).norm();
+            edge_a = e.a;
+            edge_axis = e.axis;
+            edge_pa = pa;
+            edge_pb = pb;
+        }
     }
 
-    // incident face: the other solid's face most opposed to the reference normal
-    const Solid& x = reference_on_a ? a : b;
-    const Solid& y = reference_on_a ? b : a;
-    const Face& ref = x.faces[reference];
-    int incident = 0;
-    for (int f = 1; f < 6; ++f)
-        if (y.faces[f].normal.dot(ref.normal) < y.faces[incident].normal.dot(ref.normal)) incident = f;
-    std::vector<Vec3> poly(y.faces[incident].corners.begin(), y.faces[incident].corners.end());
-    for (int k = 0; k < 4 && !poly.empty(); ++k) {
-        const Vec3& p0 = ref.corners[k];
-        const Vec3& p1 = ref.corners[(k + 1) % 4];
-        Vec3 s = (p1 - p0).cross(ref.normal);
-        if (s.dot(ref.centre - p0) > 0) s = -s;
-        poly = clip(poly, s.normalized(), p0);
+    // the reference face's contacts: the incident face (the other solid's face most opposed to
+    // the reference normal) clipped by the reference face's sides, its points below the face
+    auto face_contacts = [&] {
+        const Solid& x = reference_on_a ? a : b;
+        const Solid& y = reference_on_a ? b : a;
+        const Face& ref = x.faces[reference];
+        int incident = 0;
+        for (int f = 1; f < 6; ++f)
+            if (y.faces[f].normal.dot(ref.normal) < y.faces[incident].normal.dot(ref.normal)) incident = f;
+        std::vector<Vec3> poly(y.faces[incident].corners.begin(), y.faces[incident].corners.end());
+        for (int k = 0; k < 4 && !poly.empty(); ++k) {
+            const Vec3& p0 = ref.corners[k];
+            const Vec3& p1 = ref.corners[(k + 1) % 4];
+            Vec3 s = (p1 - p0).cross(ref.normal);
+            if (s.dot(ref.centre - p0) > 0) s = -s;
+            poly = clip(poly, s.normalized(), p0);
+        }
+        std::vector<HexContact> out;
+        const Vec3 normal = reference_on_a ? Vec3(-ref.normal) : ref.normal;
+        for (const Vec3& p : poly) {
+            double depth = ref.normal.dot(ref.centre - p);
+            if (depth < 0) continue;
+            out.push_back({p + 0.5 * depth * ref.normal, normal, depth});
+        }
+        return largest_subset(out, max_points);
+    };
+
+    // faces win unless an edge pair overlaps clearly less (the usual 5 % bias of box colliders),
+    // and even then where the face's own points are no deeper than the edge pair's overlap: an
+    // edge of one block lying across a face of the other is a line of contact, which one point at
+    // an end of it would carry on one side only (the blocks' far corners, outside the contact,
+    // can make the face axis look deeper than it is)
+    if (edge_a >= 0 && edge_depth < 0.95 * face_depth - 1e-9 * size) {
+        std::vector<HexContact> faces = face_contacts();
+        double deepest = 0.0;
+        for (const auto& c : faces) deepest = std::max(deepest, c.depth);
+        if (!faces.empty() && deepest <= edge_depth + 1e-9 * size) return faces;
+        return {{0.5 * (edge_pa + edge_pb), edge_axis, edge_depth}};
     }
-    std::vector<HexContact> out;
-    const Vec3 normal = reference_on_a ? Vec3(-ref.normal) : ref.normal;
-    for (const Vec3& p : poly) {
-        double depth = ref.normal.dot(ref.centre - p);
-        if (depth < 0) continue;
-        out.push_back({p + 0.5 * depth * ref.normal, normal, depth});
-    }
-    return largest_subset(out, max_points);
+    return face_contacts();
 }
 
 }  // namespace cairn

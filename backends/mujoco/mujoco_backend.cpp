@@ -247,9 +247,7 @@ void MujocoBackend::build(const Scene& scene, const RunOptions& options) {
              "impedance d " << p.impedance
           << " (static penetration exact, period of kn*A long by about " << 2.0 * p.impedance / (1.0 - p.impedance) * 100
           << " %); friction rows impedance " << kFrictionImpedance << " (impratio " << p.impratio
-          << ") and damping " << friction_damping_ << " 1/s; slender blocks tumbling over each other's edges "
-             "have made energy here until the run stopped as unstable, at any time step, where Bullet and ODE "
-             "matched did not (docs/backends.md)";
+          << ") and damping " << friction_damping_ << " 1/s";
     else
         n << "rigid contact: solref " << p.solref[0] << " " << p.solref[1] << ", solimp " << p.impedance << " "
           << p.impedance << " 0.001";
