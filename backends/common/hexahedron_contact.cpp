@@ -146,11 +146,12 @@ std::vector<HexContact> hexahedron_contacts(const Corners& ca, const Corners& cb
     // between far edges puts the force at the wrong place: its moment then does work the spring
     // does not store)
     struct EdgePair {
-        int a, b;
-        double depth;
-        Vec3 axis;   // unit, pushes A away from B
+        int a = -1, b = -1;
+        double depth = 0.0;
+        Vec3 axis = Vec3::Zero();   // unit, pushes A away from B
     };
-    std::vector<EdgePair> pairs;
+    std::array<EdgePair, 144> pairs;   // every non-parallel pair of the 12 × 12, on the stack
+    int count = 0;
     double edge_depth = kInf;
     for (int i = 0; i < 12; ++i)
         for (int j = 0; j < 12; ++j) {
@@ -165,13 +166,14 @@ std::vector<HexContact> hexahedron_contacts(const Corners& ca, const Corners& cb
             double push_a_up = hi_b - lo_a, push_a_down = hi_a - lo_b;
             if (push_a_up < 0 || push_a_down < 0) return {};
             double depth = std::min(push_a_up, push_a_down);
-            pairs.push_back({i, j, depth, push_a_up <= push_a_down ? axis : Vec3(-axis)});
+            pairs[size_t(count++)] = {i, j, depth, push_a_up <= push_a_down ? axis : Vec3(-axis)};
             edge_depth = std::min(edge_depth, depth);
         }
     int edge_a = -1;
     Vec3 edge_axis = Vec3::Zero(), edge_pa = Vec3::Zero(), edge_pb = Vec3::Zero();
     double edge_gap = kInf;
-    for (const EdgePair& e : pairs) {
+    for (int k = 0; k < count; ++k) {
+        const EdgePair& e = pairs[size_t(k)];
         if (e.depth > edge_depth + 1e-9 * size) continue;
         Vec3 pa, pb;
         closest_points(ca[kEdges[e.a][0]], ca[kEdges[e.a][1]], cb[kEdges[e.b][0]], cb[kEdges[e.b][1]], pa, pb);
