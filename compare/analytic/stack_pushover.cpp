@@ -54,6 +54,20 @@ struct PathPoint {
     double lambda = 0.0, top_rotation = 0.0;
 };
 
+/// the stack's heights and loads: each layer's bottom (m) and weight (N), the normal force on
+/// each bed joint (N), and the size of the joints' moments (N·m) that Newton's tolerance is
+/// measured against
+struct StackLoads {
+    std::vector<double> zb, w, nforce;
+    double force_scale = 0.0;
+    StackLoads(const std::vector<StackLayer>& l, double g) : zb(l.size() + 1, 0.0), w(l.size()), nforce(l.size(), 0.0) {
+        const size_t n = l.size();
+        for (size_t i = 0; i < n; ++i) zb[i + 1] = zb[i] + l[i].height, w[i] = l[i].mass * g;
+        for (size_t j = n; j-- > 0;) nforce[j] = w[j] + (j + 1 < n ? nforce[j + 1] : 0.0);
+        force_scale = nforce[0] * joint_width(l, 0);
+    }
+};
+
 /// Newton's method on full(x) = 0 from x, with a forward-difference Jacobian (steps of 1e-9 of
 /// each unknown's size, at least 1e-9 scale[c]), until the residual is below 1e-10 of
 /// `force_scale` (N·m) or a step moves x by less than 1e-13; false when the residual is then
@@ -98,10 +112,9 @@ std::vector<double> base_rotations(const std::vector<StackLayer>& l, const std::
 /// empty when a step does not converge
 std::vector<PathPoint> winkler_path(const std::vector<StackLayer>& l, double g, double kn) {
     const size_t n = l.size();
-    std::vector<double> zb(n + 1, 0.0), w(n), nforce(n, 0.0);
-    for (size_t i = 0; i < n; ++i) zb[i + 1] = zb[i] + l[i].height, w[i] = l[i].mass * g;
-    for (size_t j = n; j-- > 0;) nforce[j] = w[j] + (j + 1 < n ? nforce[j + 1] : 0.0);
-    const double force_scale = nforce[0] * joint_width(l, 0);   // N·m, the moments' size
+    const StackLoads loads(l, g);
+    const std::vector<double>&zb = loads.zb, &w = loads.w, &nforce = loads.nforce;
+    const double force_scale = loads.force_scale;
     // residual of joint j's moment balance for joint rotations phi and multiplier lam
     auto residual = [&](const Eigen::VectorXd& phi, double lam) {
         Eigen::VectorXd r(n);
@@ -146,10 +159,9 @@ std::vector<PathPoint> winkler_path_oblique(const std::vector<StackLayer>& l, do
     using V2 = Eigen::Vector2d;
     const size_t n = l.size();
     const V2 push(std::cos(angle), std::sin(angle));
-    std::vector<double> zb(n + 1, 0.0), w(n), nforce(n, 0.0);
-    for (size_t i = 0; i < n; ++i) zb[i + 1] = zb[i] + l[i].height, w[i] = l[i].mass * g;
-    for (size_t j = n; j-- > 0;) nforce[j] = w[j] + (j + 1 < n ? nforce[j + 1] : 0.0);
-    const double force_scale = nforce[0] * joint_width(l, 0);   // N·m, the moments' size
+    const StackLoads loads(l, g);
+    const std::vector<double>&zb = loads.zb, &w = loads.w, &nforce = loads.nforce;
+    const double force_scale = loads.force_scale;
     auto residual = [&](const std::vector<V2>& phi, double lam) {
         Eigen::VectorXd r(2 * n);
         std::vector<V2> theta(n);   // each layer's lean, the joints' below summed
@@ -202,10 +214,6 @@ std::vector<PathPoint> stack_path(const BlockStack& stack, double kn) {
     }
     return winkler_path_oblique(stack.layers, stack.g, kn, stack.push_angle);
 }
-
-}  // namespace
-
-namespace {
 
 /// the highest point of the path; NaN in both if the path failed or rises to its end (no peak)
 PathPoint path_peak(const std::vector<PathPoint>& path) {
