@@ -13,11 +13,11 @@ namespace {
 constexpr int kMaxCells = WinklerRocking::max_cells;   // contact cells of the three lower faces together
 
 // the state: centre (m), rotation (rad), their rates, each face's shear state Q = u·√A (m²) and
-// the energy dissipated by the dashpots (J)
+// the energy dissipated by the dashpots and the work of the drive (J)
 struct State {
     double x = 0, z = 0, th = 0, vx = 0, vz = 0, w = 0;
     std::array<double, kMaxCells> q{};
-    double lost = 0;
+    double lost = 0, work = 0;
 };
 
 State axpy(const State& s, double h, const State& d) {
@@ -26,6 +26,7 @@ State axpy(const State& s, double h, const State& d) {
     o.vx = s.vx + h * d.vx, o.vz = s.vz + h * d.vz, o.w = s.w + h * d.w;
     for (int k = 0; k < kMaxCells; ++k) o.q[size_t(k)] = s.q[size_t(k)] + h * d.q[size_t(k)];
     o.lost = s.lost + h * d.lost;
+    o.work = s.work + h * d.work;
     return o;
 }
 
@@ -157,10 +158,15 @@ WinklerTrace WinklerRocking::rock(double theta0, double duration, double sample_
         }
         return f;
     };
-    auto rate = [&](const State& s) {
+    auto rate = [&](const State& s, double t) {
         State d;
         d.x = s.vx, d.z = s.vz, d.th = s.w;
         double fx = 0, fz = -mass * g, tq = 0;
+        if (drive) {
+            const auto a = drive(t);
+            fx += mass * a[0], fz += mass * a[1];
+            d.work = mass * (a[0] * s.vx + a[1] * s.vz);
+        }
         for (int k = 0; k < n_cells; ++k) {
             const FaceLoad f = face_load(s, k);
             fx += f.fs;
@@ -173,7 +179,7 @@ WinklerTrace WinklerRocking::rock(double theta0, double duration, double sample_
         return d;
     };
     auto energy = [&](const State& s) {
-        double e = 0.5 * mass * (s.vx * s.vx + s.vz * s.vz) + 0.5 * inertia_c * s.w * s.w + mass * g * s.z + s.lost;
+        double e = 0.5 * mass * (s.vx * s.vx + s.vz * s.vz) + 0.5 * inertia_c * s.w * s.w + mass * g * s.z + s.lost - s.work;
         for (int k = 0; k < n_cells; ++k) {
             const FaceLoad f = face_load(s, k);
             e += 0.5 * kn * f.d2 + 0.5 * ks * s.q[size_t(k)] * s.q[size_t(k)];
@@ -241,7 +247,8 @@ WinklerTrace WinklerRocking::rock(double theta0, double duration, double sample_
     for (long n = 1; n <= steps; ++n) {
         const double t0 = (n - 1) * h;
         const State p = s;
-        const State k1 = rate(p), k2 = rate(axpy(p, 0.5 * h, k1)), k3 = rate(axpy(p, 0.5 * h, k2)), k4 = rate(axpy(p, h, k3));
+        const State k1 = rate(p, t0), k2 = rate(axpy(p, 0.5 * h, k1), t0 + 0.5 * h),
+                    k3 = rate(axpy(p, 0.5 * h, k2), t0 + 0.5 * h), k4 = rate(axpy(p, h, k3), t0 + h);
         s = axpy(axpy(axpy(axpy(p, h / 6, k1), h / 3, k2), h / 3, k3), h / 6, k4);
         settle_shear(s);
         if (!std::isfinite(s.th) || !std::isfinite(s.z))

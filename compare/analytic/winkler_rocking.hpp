@@ -12,6 +12,8 @@
 /// its own pressure centre, dashpot and shear spring (dem's sub-contacts: the normal force and its
 /// moment do not depend on the cut, only the shear does). SI units.
 
+#include <array>
+#include <functional>
 #include <vector>
 
 namespace cairn::oracle {
@@ -22,7 +24,7 @@ struct WinklerTrace {
     std::vector<double> crossings;        ///< times θ passes 0, s
     std::vector<double> amplitudes;       ///< largest |θ| between successive crossings (after each), rad
     std::vector<double> touches;          ///< times the lifted bottom edge reaches the base's top (the −x edge first, then alternately), s
-    double energy_error = 0.0;            ///< largest |E(t) + dissipated − E0| over the run, J
+    double energy_error = 0.0;            ///< largest |E(t) + dissipated − work − E0| over the run, J
     double dissipated = 0.0;              ///< dashpots, slip and released shear springs at the end, J
     int slip_steps = 0;                   ///< steps on which a shear spring reached μ·Fn and slipped
     double step = 0.0;                    ///< integration step, s
@@ -47,11 +49,18 @@ struct WinklerRocking {
     /// RK4 steps per period 2π/ω of the stiffest contact mode (all lower faces pressed, bounded
     /// from above); 400 keeps the first crossing converged to 1e-7 relative
     double steps_per_period = 400.0;
+    /// body force per unit mass on the block, {x, z} (m/s²) at time t (s): a ground motion's −a_g
+    /// (the block is solved in the ground's frame); empty: none. Its work is in the energy ledger
+    std::function<std::array<double, 2>(double)> drive{};
 
     /// moment of inertia about the centre, m(w² + h²)/12, kg·m²
     double inertia() const { return mass * (width * width + height * height) / 12.0; }
     /// the static settlement of the block standing on its base, W/(kn·w·L), m
     double settlement() const { return mass * g / (kn * width * depth); }
+
+    /// at rest on its base, settled by W/(kn·w·L), under `drive` for `duration` (s), sampling every
+    /// `sample_dt` (s): rock(0, duration, sample_dt, settlement())
+    WinklerTrace rest(double duration, double sample_dt) const { return rock(0.0, duration, sample_dt, settlement()); }
 
     /// release at rest tilted θ0 (rad, 0 ≤ θ0 < atan(w/h)) with its +x bottom edge just touching the
     /// base's top (θ0 = 0: the whole bottom just touching), optionally lowered by `sink` (m); run for

@@ -28,6 +28,9 @@ public:
     virtual std::vector<std::string> contact_modes(const Scene& scene) const = 0;
     /// what CaseAnalysis::event_time marks, e.g. "first impact"
     virtual std::string event_label() const = 0;
+    /// throws cairn::Error naming what of `scene` the kind's oracles cannot model; called before
+    /// any run (validation::variants_for), so a scene they cannot judge fails before it is run
+    virtual void check(const Scene& scene) const = 0;
 };
 
 /// A kind made of plain functions: how every kind in compare/cases is written.
@@ -36,14 +39,19 @@ public:
     using Analyse = CaseAnalysis (*)(const Scene&, const std::vector<Sample>&, ContactKind);
     using Curve = std::vector<double> (*)(const Scene&, ContactKind, const std::vector<double>&);
     using Modes = std::vector<std::string> (*)(const Scene&);
+    using Check = void (*)(const Scene&);
+    /// `check` nullptr: the loader's checks are all the kind needs
     FunctionKind(std::string name, std::vector<std::string> parameters, Analyse analyse, Curve curve, Modes modes,
-                 std::string event_label);
+                 std::string event_label, Check check = nullptr);
     std::string name() const override { return name_; }
     std::vector<std::string> parameters() const override { return parameters_; }
     CaseAnalysis analyse(const Scene& scene, const std::vector<Sample>& samples, ContactKind contact) const override;
     std::vector<double> curve(const Scene& scene, ContactKind contact, const std::vector<double>& t) const override;
     std::vector<std::string> contact_modes(const Scene& scene) const override { return modes_(scene); }
     std::string event_label() const override { return event_; }
+    void check(const Scene& scene) const override {
+        if (check_) check_(scene);
+    }
 
 private:
     std::string name_;
@@ -52,6 +60,7 @@ private:
     Curve curve_;   ///< nullptr: no reference curve
     Modes modes_;
     std::string event_;
+    Check check_;
 };
 
 /// contact modes of a kind judged on rigid contact only (Coulomb friction, rigid pivots)

@@ -37,9 +37,9 @@ const std::vector<const CaseKind*>& case_kinds() {
 }
 
 FunctionKind::FunctionKind(std::string name, std::vector<std::string> parameters, Analyse analyse, Curve curve,
-                           Modes modes, std::string event_label)
+                           Modes modes, std::string event_label, Check check)
     : name_(std::move(name)), parameters_(std::move(parameters)), analyse_(analyse), curve_(curve), modes_(modes),
-      event_(std::move(event_label)) {}
+      event_(std::move(event_label)), check_(check) {}
 
 CaseAnalysis FunctionKind::analyse(const Scene& scene, const std::vector<Sample>& samples, ContactKind contact) const {
     return analyse_(scene, samples, contact);

@@ -4,6 +4,7 @@
 #include <cassert>
 #include <cmath>
 
+#include "error.hpp"
 #include "geometry/hexahedron.hpp"
 
 namespace cairn::cases {
@@ -96,9 +97,11 @@ Vec3 rocking_axis(const Scene& scene) {
     return a.norm() > 0.0 ? a.normalized() : Vec3::UnitY();
 }
 
-oracle::HousnerBlock housner_block(const Scene& scene) {
+oracle::HousnerBlock housner_block(const Scene& scene) { return housner_block(scene, rocking_axis(scene)); }
+
+oracle::HousnerBlock housner_block(const Scene& scene, const Vec3& axis) {
     const BlockDef& d = scene.blocks.at(size_t(scene.reference->block));
-    const Vec3 across = rocking_axis(scene).cross(Vec3::UnitZ()).normalized();
+    const Vec3 across = axis.cross(Vec3::UnitZ()).normalized();
     double lo = 1e300, hi = -1e300, zlo = 1e300, zhi = -1e300;
     for (const auto& c : d.corners) {
         lo = std::min(lo, c.dot(across));
@@ -107,6 +110,21 @@ oracle::HousnerBlock housner_block(const Scene& scene) {
         zhi = std::max(zhi, c.z());
     }
     return {0.5 * (hi - lo), 0.5 * (zhi - zlo), gravity(scene)};
+}
+
+void require_horizontal_base(const Scene& scene, const std::string& kind) {
+    const Vec3 g = scene.gravity.normalized();
+    // 1e-3 rad: a plane written to four decimals in degrees
+    if (g.dot(-Vec3::UnitZ()) < std::cos(1e-3))
+        throw Error(scene.source + ": a " + kind + " reference needs gravity along −z (the base horizontal)");
+    for (const auto& b : scene.blocks)
+        if (b.fixed) {
+            if ((b.orientation * Vec3::UnitZ()).z() < std::cos(1e-3))
+                throw Error(scene.source + ": a " + kind + " reference needs a horizontal support; block '" + b.name +
+                            "' is tilted");
+            return;
+        }
+    throw Error(scene.source + ": a " + kind + " reference needs a fixed block as its base");
 }
 
 }  // namespace cairn::cases

@@ -31,6 +31,11 @@ Vec3 rocking_axis(const Scene& scene);
 /// Housner's block of the reference block: half-width across the rocking axis and half-height,
 /// from its corners in the block frame
 oracle::HousnerBlock housner_block(const Scene& scene);
+/// the same about the unit block-frame axis `axis` (horizontal)
+oracle::HousnerBlock housner_block(const Scene& scene, const Vec3& axis);
+/// throws cairn::Error naming `kind` unless gravity is along −z and the first fixed block (the
+/// base) stands upright within 1e-3 rad
+void require_horizontal_base(const Scene& scene, const std::string& kind);
 
 /// component c (0 x, 1 y, 2 z) of probe p, minus its value at t = 0 when `relative`
 metrics::Series probe_series(const std::vector<Sample>& s, int p, int c, bool relative);

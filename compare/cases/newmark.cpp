@@ -27,25 +27,11 @@ std::function<Vec3(double)> drive(const Scene& scene) {
     };
 }
 
-/// the scene must be Newmark's: gravity along −z and a horizontal support (the first fixed block)
-void check_plane(const Scene& scene) {
-    const Vec3 g = scene.gravity.normalized();
-    // 1e-3 rad: a plane written to four decimals in degrees
-    if (g.dot(-Vec3::UnitZ()) < std::cos(1e-3))
-        throw Error(scene.source + ": a newmark reference needs gravity along −z (the base horizontal)");
-    for (const auto& b : scene.blocks)
-        if (b.fixed) {
-            if ((b.orientation * Vec3::UnitZ()).z() < std::cos(1e-3))
-                throw Error(scene.source + ": a newmark reference needs a horizontal support; block '" + b.name +
-                            "' is tilted");
-            return;
-        }
-    throw Error(scene.source + ": a newmark reference needs a fixed block as its base");
-}
+void check_newmark(const Scene& scene) { require_horizontal_base(scene, "newmark"); }
 
 /// the oracle's run over the scene's duration
 oracle::SlidingHistory oracle_run(const Scene& scene) {
-    check_plane(scene);
+    check_newmark(scene);
     return oracle::newmark_slide(drive(scene), gravity(scene), scene.contact.friction, scene.run.duration);
 }
 
@@ -192,7 +178,7 @@ CaseAnalysis analyse_newmark(const Scene& scene, const std::vector<Sample>& s, C
 // kind "newmark": Coulomb's law holds for rigid contact
 static const CaseKind& newmark_kind() {
     static const FunctionKind k("newmark", {}, analyse_newmark, newmark_curve, rigid_contact_only,
-                                "slid half the final distance");
+                                "slid half the final distance", check_newmark);
     return k;
 }
 

@@ -10,43 +10,20 @@
 #include "analytic/winkler_rocking.hpp"
 #include "cases/case_kind.hpp"
 #include "cases/case_util.hpp"
+#include "cases/winkler_model.hpp"
 #include "metrics/signal.hpp"
 
 namespace cairn::cases {
 
 namespace {
 
-/// the oracle of the scene's reference block: its extent across the axis, up and along the axis,
-/// its faces cut as dem cuts them (mesh divisions × the overlap sub-division)
 oracle::WinklerRocking winkler_block(const Scene& scene, ContactKind contact) {
-    const int a = scene.reference->block;
-    const auto hb = housner_block(scene);
-    const Vec3 axis = rocking_axis(scene), across = axis.cross(Vec3::UnitZ()).normalized();
-    double lo = 1e300, hi = -1e300;
-    for (const auto& c : scene.blocks.at(size_t(a)).corners) lo = std::min(lo, c.dot(axis)), hi = std::max(hi, c.dot(axis));
-    oracle::WinklerRocking w{2.0 * hb.b, 2.0 * hb.h, hi - lo, block_mass(scene, a), gravity(scene),
-                             scene.contact.kn, scene.contact.ks, scene.contact.friction};
-    w.zeta = scene.contact.damping_rule == ContactDampingRule::ratio ? scene.contact.damping : 0.0;
-    int div_across = 1;
-    for (int k = 0; k < 3; ++k)
-        if (std::abs(across[k]) > 0.5) div_across = contact.divisions[size_t(k)];
-    w.cells_across = div_across * scene.contact.subdivision;
-    w.cells_up = contact.divisions[2] * scene.contact.subdivision;
-    return w;
+    return winkler_model(scene, contact, rocking_axis(scene));
 }
 
 /// why a variant has no reference here, or empty when the oracle models it
 std::string unmodelled(const Scene& scene, ContactKind contact) {
-    if (!contact.penalty) return "rigid contact: Housner's rigid base (shown), not a Winkler bed";
-    if (!contact.point_springs) return "an engine's matched contact reproduces kn·A of a face, not the Winkler integral under a pivoting corner";
-    if (scene.contact.scheme != ContactScheme::overlap)
-        return "the paper scheme lumps kn on grid points (an edge row's stiffness set by the grid), not the Winkler integral";
-    if (scene.contact.damping_rule == ContactDampingRule::time) return "the oracle carries dashpots by damping ratio, not by damping time";
-    const auto w = winkler_block(scene, contact);
-    if (w.cells_across + 2 * w.cells_up > oracle::WinklerRocking::max_cells)
-        return "the mesh times the sub-division cuts the faces finer than the oracle's " +
-               std::to_string(oracle::WinklerRocking::max_cells) + " cells";
-    return "";
+    return winkler_unmodelled(scene, contact, rocking_axis(scene));
 }
 
 double release_tilt(const Scene& scene) { return scene.reference->values.at("theta0"); }

@@ -201,14 +201,14 @@ report::Document write_compare_report(const CaseResult& result, const CompareCon
         report::Table v{{"variant", "verdict", "worst metric"}, {}};
         for (const auto& r : result.runs) v.rows.push_back({r.variant.name, report::run_verdict(r), report::worst_metric_text(r)});
         d.table(v);
-        report::Table m{{"variant", "metric", "value", "reference", "tolerance", "verdict"}, {}};
+        report::Table m{{"variant", "metric", "value", "reference", "tolerance", "verdict", "basis"}, {}};
         for (const auto& r : result.runs)
             if (r.analysed)
                 for (const auto& x : r.analysis.metrics) {
                     const std::string unit = x.unit.empty() ? "" : " " + x.unit;
                     m.rows.push_back({r.variant.name, x.name, number_text(x.value) + unit,
                                       x.has_reference ? number_text(x.reference) + unit : "-", x.tolerance_text(),
-                                      x.verdict()});
+                                      x.verdict(), x.basis});
                 }
         d.table(m);
         const auto fig = report::write_figures({result}, dir);

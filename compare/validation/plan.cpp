@@ -39,7 +39,11 @@ std::vector<Variant> variants_for(const Scene& scene, const std::vector<BackendI
     // the reference kind decides which engine contact modes it can judge; an unknown kind is an
     // error here rather than a case run on dem alone
     std::vector<std::string> modes;
-    if (scene.reference) modes = cases::case_kind(scene.reference->kind, scene.source).contact_modes(scene);
+    if (scene.reference) {
+        const auto& kind = cases::case_kind(scene.reference->kind, scene.source);
+        kind.check(scene);
+        modes = kind.contact_modes(scene);
+    }
     std::vector<Variant> out;
     for (const auto& b : backends)
         for (auto& v : backend_variants(b, modes)) out.push_back(std::move(v));

@@ -38,7 +38,8 @@ std::vector<Variant> backend_variants(const BackendInfo& backend, const std::vec
 /// the variants that make sense for `scene` among `backends` (in that order): the penalty engine's
 /// block models always; the rigid-contact engines in each contact mode the scene's reference kind
 /// can judge (cases::CaseKind::contact_modes); none for a scene without a reference. Throws
-/// cairn::Error for a reference kind without a CaseKind.
+/// cairn::Error for a reference kind without a CaseKind, or a scene its oracles cannot model
+/// (cases::CaseKind::check).
 std::vector<Variant> variants_for(const Scene& scene, const std::vector<BackendInfo>& backends);
 
 }  // namespace cairn::validation

@@ -13,6 +13,7 @@ const std::vector<ReferenceKind>& reference_kinds() {
         {"rolling", {"slope"}},                                // slope angle (rad)
         {"housner", {"theta0", "axis_x", "axis_y", "axis_z", "impacts"}}, // release tilt (rad), rocking axis, impacts judged on a calibrated damped contact
         {"winkler_rocking", {"theta0", "axis_x", "axis_y", "axis_z"}},   // release tilt (rad), rocking axis: on a Winkler base of modulus kn
+        {"ground_rocking", {}},                                 // one block rocking under its ground motion: Housner's equation, or dem's Winkler base
         {"pushover", {"threshold"}},                           // ramped ground motion: rotation (rad) judged
         {"arch", {"stands", "thickness"}},                     // 1 stands / 0 collapses, thickness (m)
     };
