@@ -24,7 +24,7 @@ const char* const kKind = "ground_rocking";
 /// what the oracles need of the scene
 struct Setup {
     int free = 0;                        ///< the block among the free blocks (Sample::blocks)
-    Vec3 dir = Vec3::UnitX();            ///< unit, world, horizontal: θ > 0 moves the centre this way
+    Vec3 dir = Vec3::UnitX();            ///< unit, world, horizontal: the drive's first push; θ > 0 moves the centre this way
     Vec3 axis = Vec3::UnitY();           ///< z × dir, world: θ is a turn about it
     Vec3 axis_block = Vec3::UnitY();     ///< the same in the block frame, along a block axis
     std::function<Vec3(double)> drive;   ///< the block's loads per unit mass at t (m/s², world)
@@ -89,6 +89,14 @@ void read_direction(const Scene& scene, const BlockDef& d, Setup& out) {
     }
     if (!(largest.norm() > 0.0)) throw refuse(scene, "block '" + d.name + "' has no horizontal drive to rock it");
     out.dir = largest.normalized();
+    // θ > 0 the way the drive first pushes (its first sample past 1e-6 of the largest)
+    for (double t : out.breaks) {
+        const Vec3 f = out.drive(t), h(f.x(), f.y(), 0.0);
+        if (h.norm() > 1e-6 * largest.norm()) {
+            if (h.dot(out.dir) < 0.0) out.dir = -out.dir;
+            break;
+        }
+    }
     for (double t : at) {
         const Vec3 f = out.drive(t), h(f.x(), f.y(), 0.0);
         if ((h - h.dot(out.dir) * out.dir).norm() > 1e-6 * largest.norm())
