@@ -118,6 +118,35 @@ void read_direction(const Scene& scene, const BlockDef& d, Setup& out) {
     }
 }
 
+/// the block stands wholly on the top of one fixed block: its four lowest corners inside that top
+/// (in the support's frame) and at its height within 1 % of the block's height (a placing gap);
+/// on a narrower support it would rock about the support's edges, not its own
+void require_support(const Scene& scene, const BlockDef& d) {
+    std::array<Vec3, 8> world;
+    for (size_t i = 0; i < 8; ++i) world[i] = d.position + d.orientation * d.corners[i];
+    std::sort(world.begin(), world.end(), [](const Vec3& a, const Vec3& b) { return a.z() < b.z(); });
+    const double bottom = world[0].z(), height = world[7].z() - world[0].z();
+    for (const auto& b : scene.blocks) {
+        if (!b.fixed) continue;
+        Vec3 lo = Vec3::Constant(1e300), hi = Vec3::Constant(-1e300);
+        double top = -1e300;
+        for (const auto& c : b.corners) {
+            lo = lo.cwiseMin(c), hi = hi.cwiseMax(c);
+            top = std::max(top, (b.position + b.orientation * c).z());
+        }
+        const double eps = 1e-9 * (hi - lo).maxCoeff();
+        bool inside = std::abs(top - bottom) <= 0.01 * height;
+        for (size_t i = 0; i < 4 && inside; ++i) {
+            const Vec3 l = b.orientation.conjugate() * (world[i] - b.position);
+            inside = l.x() >= lo.x() - eps && l.x() <= hi.x() + eps && l.y() >= lo.y() - eps && l.y() <= hi.y() + eps;
+        }
+        if (inside) return;
+    }
+    throw refuse(scene, "block '" + d.name +
+                            "' does not stand wholly on the top of a fixed block: it would rock about the support's edges, "
+                            "not its own");
+}
+
 /// the scene as the oracles see it; throws cairn::Error naming what they cannot model
 Setup read_setup(const Scene& scene) {
     require_horizontal_base(scene, kKind);
@@ -136,6 +165,7 @@ Setup read_setup(const Scene& scene) {
         for (int k = 0; k < 3; ++k)
             if (std::min(std::abs(c[k] - lo[k]), std::abs(c[k] - hi[k])) > 1e-9 * (hi - lo).maxCoeff())
                 throw refuse(scene, "blocks." + d.name + ": the block must be rectangular (its corners on a box in its frame)");
+    require_support(scene, d);
     Setup out;
     out.free = free_index(scene, a);
     read_drive(scene, d, out);

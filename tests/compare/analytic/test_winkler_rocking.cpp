@@ -136,36 +136,46 @@ TEST_CASE("Winkler rocking: bad input is refused", "[oracle][winkler_rocking]") 
     CHECK_THROWS_AS(r.rock(0.3, 1.0, 1e-2), Error);
 }
 
-TEST_CASE("Winkler rocking: a slowly ramped sideways drive tilts the block by M/(kn·L·B³/12 − W·h/2)", "[oracle][winkler_rocking]") {
+TEST_CASE("Winkler rocking: a slowly ramped sideways drive tilts the block by m·f·(h/2)/(kn·L·B³/12 − W·h/2)", "[oracle][winkler_rocking]") {
     // the drive f = 0.1 g at the centre, h/2 = 0.5 m above the base: its reaction stays inside the
     // kern (e = f·h/(2g) = 0.05 m < B/6), so the whole base presses with d linear across it; the
     // moment m·f·h/2 about the base's centre and the weight's W·θ·h/2 as the centre moves are
     // carried by kn·L·∫x² dx·θ
     auto r = paper_block(3e7, 3e7);
     r.zeta = 0.3;
-    const double f = 0.1 * 9.81, ramp = 1.0;
-    r.drive = [=](double t) { return std::array<double, 2>{f * std::min(1.0, t / ramp), 0.0}; };
-    const auto tr = r.rest(2.0, 1e-3);
+    const double f = 0.1 * 9.81, ramp = 2.0;
+    // a half-cosine ramp: smooth, so the rocking mode (0.18 s, barely damped by the face dashpots)
+    // rings little after it
+    r.drive = [=](double t) {
+        return std::array<double, 2>{f * (t < ramp ? 0.5 * (1.0 - std::cos(M_PI * t / ramp)) : 1.0), 0.0};
+    };
+    const auto tr = r.rest(3.0, 1e-3);
+    // the base shear acts at the base's top, h/2 less the settlement δ below the centre
     const double stiff = 3e7 * 0.2 * std::pow(0.7, 3) / 12.0 - r.mass * 9.81 * 0.5;
-    const double expected = r.mass * f * 0.5 / stiff;
-    // 0.5 %: the linearisation (θ ~ 1e-3 rad, the shear springs' stretch at the base) and what is
-    // left of the ramp's ringing after 1 s at ζ = 0.3
-    CHECK(tr.theta.back() == Approx(expected).epsilon(5e-3));
-    CHECK(tr.theta.back() > 0.0);   // pushed towards +x, the top leans to +x
+    const double expected = r.mass * f * (0.5 - r.settlement()) / stiff;
+    // the mean over the last 0.54 s, three periods of the rocking mode
+    double sum = 0.0;
+    int n = 0;
+    for (size_t i = 0; i < tr.t.size(); ++i)
+        if (tr.t[i] > 3.0 - 0.54) sum += tr.theta[i], ++n;
+    // 0.5 %: the linearisation (θ ~ 1e-3 rad) and what is left of the ringing in the mean
+    // (measured −0.17 % with the lever h/2, 0.00 % with h/2 − δ)
+    CHECK(sum / n == Approx(expected).epsilon(5e-3));
+    CHECK(sum / n > 0.0);   // pushed towards +x, the top leans to +x
 }
 
 TEST_CASE("Winkler rocking: under a drive the energy balance books its work", "[oracle][winkler_rocking]") {
-    // a one-sine pulse of 0.8 g (past uplift, tan α = 0.7 → 0.7 g) over 0.5 s: the block rocks; its
-    // energy plus what was dissipated less the drive's work stays at its start
-    auto r = paper_block(3e8, 3e8);
-    r.zeta = 0.05;
+    // one sine of 0.8 g sideways and 0.5 g up over 0.5 s on a frictionless base (no shear springs,
+    // no dashpots): the block translates and bounces on its springs; its energy less the drive's
+    // work stays at its start to RK4's error, of order (ωh)⁴ of the contact energy
+    auto r = paper_block(3e8, 0.0);
     r.drive = [](double t) {
-        return std::array<double, 2>{t < 0.5 ? 0.8 * 9.81 * std::sin(2 * M_PI * t / 0.5) : 0.0, 0.0};
+        const double s = t < 0.5 ? std::sin(2 * M_PI * t / 0.5) : 0.0;
+        return std::array<double, 2>{0.8 * 9.81 * s, 0.5 * 9.81 * s};
     };
-    const auto tr = r.rest(1.5, 1e-3);
-    double largest = 0.0;
-    for (double th : tr.theta) largest = std::max(largest, std::abs(th));
-    REQUIRE(largest > 0.01);   // it rocked
-    // RK4 at 400 steps per period keeps the ledger to 1e-6 of m·g·h (measured 1e-9)
-    CHECK(tr.energy_error < 1e-6 * r.mass * 9.81 * 1.0);
+    const auto tr = r.rest(1.0, 1e-3);
+    // the drive moved it (measured 0.31 m)
+    REQUIRE(std::abs(tr.x.back() - tr.x.front()) > 0.1);
+    // measured 1.3e-11 J, 4e-15 of m·g·h
+    CHECK(tr.energy_error < 1e-8 * r.mass * 9.81 * 1.0);
 }

@@ -232,6 +232,16 @@ TEST_CASE("ground_rocking: a scene its plane oracles cannot model is refused bef
         refused(x, "lifts the block off");
     }
     {
+        Scene x = s;   // on a plinth narrower than the block: it would rock about the plinth's edges
+        for (auto& b : x.blocks)
+            if (b.fixed)
+                for (auto& c : b.corners) c.x() *= 0.18 / 3.0;   // the 3.0 m base → 0.18 m, under a 0.2 m block
+        refused(x, "does not stand wholly on the top of a fixed block");
+        Scene y = s;   // lifted 5 cm off its base
+        y.blocks[size_t(a)].position.z() += 0.05;
+        refused(y, "does not stand wholly on the top of a fixed block");
+    }
+    {
         Scene x = s;   // gravity along a tilted plane
         x.gravity = Vec3(1.0, 0.0, -9.76);
         refused(x, "gravity");
