@@ -2,6 +2,7 @@
 
 #include <cmath>
 
+#include "error.hpp"
 #include "geometry/hexahedron.hpp"
 #include "registry.hpp"
 #include "scene/scene_builder.hpp"
@@ -61,6 +62,19 @@ std::unique_ptr<Backend> build_backend(const std::string& engine, const Scene& s
     options.contact_mode = mode;
     backend->build(scene, options);
     return backend;
+}
+
+std::vector<Sample> sampled_run(const std::string& engine, const Scene& scene, const std::string& mode, double every) {
+    auto backend = build_backend(engine, scene, mode);
+    const double dt = backend->time_step();
+    const long long steps = std::llround(scene.run.duration / dt);
+    const long long stride = std::max(1LL, std::llround(every / dt));
+    std::vector<Sample> out{backend->sample()};
+    for (long long i = 1; i <= steps; ++i) {
+        if (backend->step() != StepStatus::ok) throw Error(engine + " unstable: " + backend->failure());
+        if (i % stride == 0 || i == steps) out.push_back(backend->sample());
+    }
+    return out;
 }
 
 double angle_about_y(const Quat& q) {

@@ -38,6 +38,11 @@ bool has_matched_mode(const std::string& engine);
 /// a backend `engine` built for `scene` in contact mode `mode` ("rigid" or "matched")
 std::unique_ptr<Backend> build_backend(const std::string& engine, const Scene& scene, const std::string& mode);
 
+/// the run of `scene` on `engine` in contact mode `mode` at the backend's own step, sampled every
+/// `every` seconds (and at the end); throws cairn::Error naming the engine if it goes unstable
+std::vector<Sample> sampled_run(const std::string& engine, const Scene& scene, const std::string& mode = "rigid",
+                                double every = 1e-3);
+
 /// rotation angle about y of a rotation that is a pure y rotation, rad
 double angle_about_y(const Quat& q);
 

@@ -19,25 +19,10 @@ Scene shipped(const std::string& name) {
     return load_scene(std::string(CAIRN_SOURCE_DIR) + "/scenarios/earthquake/" + name + ".toml");
 }
 
-/// the run of `scene` on `engine` (rigid contact; dem: its penalty contact, rigid blocks), a sample
-/// every millisecond
-std::vector<Sample> run(const std::string& engine, const Scene& scene) {
-    auto backend = build_backend(engine, scene, "rigid");
-    const double dt = backend->time_step();
-    const long long steps = std::llround(scene.run.duration / dt);
-    const long long every = std::max(1LL, std::llround(1e-3 / dt));
-    std::vector<Sample> out{backend->sample()};
-    for (long long i = 1; i <= steps; ++i) {
-        if (backend->step() != StepStatus::ok) FAIL(engine << " unstable: " << backend->failure());
-        if (i % every == 0 || i == steps) out.push_back(backend->sample());
-    }
-    return out;
-}
-
 /// every judged metric of `scene` on `engine` passes, and the names judged are `expected`
 void judge(const std::string& engine, const Scene& scene, const std::vector<std::string>& expected) {
     const bool dem = engine == "dem";
-    const auto a = cases::analyse_case(scene, run(engine, scene), {dem, dem});
+    const auto a = cases::analyse_case(scene, sampled_run(engine, scene), {dem, dem});
     std::vector<std::string> judged;
     for (const auto& m : a.metrics) {
         if (!m.judged()) continue;

@@ -18,25 +18,10 @@ Scene shipped(const std::string& name, const std::vector<Override>& overrides = 
     return load_scene(std::string(CAIRN_SOURCE_DIR) + "/scenarios/earthquake/" + name + ".toml", overrides);
 }
 
-/// the run of `scene` on `engine` (rigid contact; dem: its penalty contact, rigid blocks), a sample
-/// every millisecond
-std::vector<Sample> run(const std::string& engine, const Scene& scene) {
-    auto backend = build_backend(engine, scene, "rigid");
-    const double dt = backend->time_step();
-    const long long steps = std::llround(scene.run.duration / dt);
-    const long long every = std::max(1LL, std::llround(1e-3 / dt));
-    std::vector<Sample> out{backend->sample()};
-    for (long long i = 1; i <= steps; ++i) {
-        if (backend->step() != StepStatus::ok) FAIL(engine << " unstable: " << backend->failure());
-        if (i % every == 0 || i == steps) out.push_back(backend->sample());
-    }
-    return out;
-}
-
 /// the judged metrics of the newmark analysis of `scene` on `engine` (`count` of them), each checked
 void judge(const std::string& engine, const Scene& scene, int count) {
     const bool dem = engine == "dem";
-    const auto a = cases::analyse_case(scene, run(engine, scene), {dem, dem});
+    const auto a = cases::analyse_case(scene, sampled_run(engine, scene), {dem, dem});
     int judged = 0;
     for (const auto& m : a.metrics) {
         if (!m.judged()) continue;
@@ -49,7 +34,7 @@ void judge(const std::string& engine, const Scene& scene, int count) {
 
 /// dem's final slide less Newmark's, m
 double excess_slide(const Scene& scene) {
-    const auto a = cases::analyse_case(scene, run("dem", scene), {true, true});
+    const auto a = cases::analyse_case(scene, sampled_run("dem", scene), {true, true});
     for (const auto& m : a.metrics)
         if (m.name == "final slide") return m.value - m.reference;
     FAIL("no final slide");
