@@ -399,7 +399,7 @@ CaseAnalysis analyse_ground(const Scene& scene, const std::vector<Sample>& sampl
         return out;
     }
     char t_basis[300];
-    std::snprintf(t_basis, sizeof t_basis, "%s; 1 %% of the time scale 1/p = %.3g s", model.c_str(), 0.01 / t_tol);
+    std::snprintf(t_basis, sizeof t_basis, "%s; 1 %% of the time scale 1/p = %.3g s", model.c_str(), t_tol / 0.01);
     const char* uplift = "uplift (|θ| = 5 % of α)";
     if (std::isfinite(run.mark_time))
         out.metrics.push_back(if_trusted(absolute(uplift, "s", run.mark_time, ref.mark_time, t_tol, t_basis), ref.mark_time, trust));
