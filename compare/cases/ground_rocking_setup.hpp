@@ -1,0 +1,39 @@
+#pragma once
+/// What the ground_rocking kind's oracles need of a scene, read once and checked, and the two
+/// oracles run on it: Housner's equation and the rigid block on dem's Winkler base, both under the
+/// scene's own drive (compare/cases/ground_rocking.cpp judges with them).
+
+#include <functional>
+#include <vector>
+
+#include "analytic/rocking_oracle.hpp"
+#include "cases/case_analysis.hpp"
+
+namespace cairn::cases {
+
+/// what the oracles need of the scene
+struct GroundSetup {
+    int free = 0;                        ///< the block among the free blocks (Sample::blocks)
+    Vec3 dir = Vec3::UnitX();            ///< unit, world, horizontal: the drive's first push; θ > 0 moves the centre this way
+    Vec3 axis = Vec3::UnitY();           ///< z × dir, world: θ is a turn about it
+    Vec3 axis_block = Vec3::UnitY();     ///< the same in the block frame, along a block axis
+    std::function<Vec3(double)> drive;   ///< the block's loads per unit mass at t (m/s², world); reads the scene, which must outlive it
+    std::vector<double> breaks;          ///< s, ascending: where the drive kinks or jumps
+    double end = 0.0;                    ///< s: the drive is zero from here on
+    double alpha = 0.0;                  ///< slenderness atan(b/h) across the axis, rad
+    double scale = 1.0;                  ///< the oracles' horizontal drive is the scene's times this
+};
+
+/// the scene as the oracles see it; throws cairn::Error naming the key of what they cannot model
+GroundSetup read_ground_setup(const Scene& scene);
+
+/// the drive as Housner's oracle takes it: the ground's acceleration along dir and upwards
+oracle::BaseMotion ground_base_motion(const GroundSetup& s);
+
+/// Housner's block under the scene's drive at the times t, with impact ratio r (< 0: Housner's)
+oracle::RockingResult ground_housner(const Scene& scene, const GroundSetup& s, const std::vector<double>& t, double r);
+
+/// the Winkler block of dem's contact under the same drive, θ at the times t
+std::vector<double> ground_winkler(const Scene& scene, ContactKind contact, const GroundSetup& s, const std::vector<double>& t);
+
+}  // namespace cairn::cases
