@@ -16,6 +16,7 @@ namespace {
 
 const char* const kKind = "ground_rocking";
 
+/// a refusal naming the scene file and the kind
 Error refuse(const Scene& scene, const std::string& what) {
     return Error(scene.source + ": " + what + " (a " + kKind + " reference)");
 }
