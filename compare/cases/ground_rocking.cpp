@@ -20,6 +20,19 @@ namespace {
 
 void check_ground(const Scene& scene) { read_ground_setup(scene); }
 
+/// why Housner's block does not model a rigid-contact run, or empty: it neither slides nor bounces.
+/// A drive past μ·(g − f_z) slides a resting block (the Winkler base models that, Housner's
+/// pivot does not); a rocking block can slide below it too, which this does not catch
+std::string housner_unmodelled(const Scene& scene, const GroundSetup& s) {
+    if (s.friction_demand <= scene.contact.friction) return "";
+    char why[240];
+    std::snprintf(why, sizeof why,
+                  "the drive beats friction (|f_h|/(g − f_z) reaches %.3g > μ = %.3g): the block slides, which Housner's "
+                  "pivot does not model",
+                  s.friction_demand, scene.contact.friction);
+    return why;
+}
+
 /// what a rotation history did, read the same way from a run and from an oracle's curve
 struct Response {
     double mark_time = NAN;    ///< s: |θ| first reaches the uplift mark
@@ -155,7 +168,7 @@ CaseAnalysis analyse_ground(const Scene& scene, const std::vector<Sample>& sampl
     const Response run = read_response(out.measured, mark, s.alpha);
     if (std::isfinite(run.mark_time)) out.event_time = run.mark_time, out.has_event = true;
 
-    const std::string unmodelled = contact.penalty ? winkler_unmodelled(scene, contact, s.axis_block) : "";
+    const std::string unmodelled = contact.penalty ? winkler_unmodelled(scene, contact, s.axis_block) : housner_unmodelled(scene, s);
     if (!unmodelled.empty()) {
         out.analytic = ground_housner(scene, s, t, -1.0).theta;
         out.analytic_key = "Housner";

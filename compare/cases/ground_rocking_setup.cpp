@@ -64,6 +64,8 @@ void read_direction(const Scene& scene, const BlockDef& d, GroundSetup& out) {
     for (double t : at) {
         const Vec3 f = out.drive(t), h(f.x(), f.y(), 0.0);
         if (h.norm() > largest.norm()) largest = h;
+        // a ratio of two linear pieces is monotonic on each: its largest is at a break
+        if (gravity(scene) - f.z() > 0.0) out.friction_demand = std::max(out.friction_demand, h.norm() / (gravity(scene) - f.z()));
         if (gravity(scene) - f.z() <= 0.0) {
             char buf[160];
             std::snprintf(buf, sizeof buf, "the drive's vertical part lifts the block off at t = %.6g s", t);

@@ -22,6 +22,7 @@ struct GroundSetup {
     double end = 0.0;                    ///< s: the drive is zero from here on
     double alpha = 0.0;                  ///< slenderness atan(b/h) across the axis, rad
     double scale = 1.0;                  ///< the oracles' horizontal drive is the scene's times this
+    double friction_demand = 0.0;        ///< largest |horizontal drive| / (g − its vertical part)
 };
 
 /// the scene as the oracles see it; throws cairn::Error naming the key of what they cannot model

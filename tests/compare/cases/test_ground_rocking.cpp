@@ -247,3 +247,16 @@ TEST_CASE("ground_rocking: a scene its plane oracles cannot model is refused bef
         refused(x, "gravity");
     }
 }
+
+TEST_CASE("ground_rocking: a drive past friction leaves the rigid engines unjudged, dem judged on its base", "[cases][ground_rocking]") {
+    // the rock pulse peaks at 0.24 g: at μ = 0.2 the block slides, which Housner's pivot does not
+    // model; the Winkler base carries dem's Coulomb springs and still models it
+    Scene s = shipped("block_pulse_rock");
+    s.contact.friction = 0.2;
+    const auto t = grid(1.5, 1e-3);
+    const auto rigid = kind().analyse(s, turned_run(s, t, std::vector<double>(t.size(), 0.0), Vec3::UnitY()), {false});
+    REQUIRE(rigid.metrics.size() == 1);
+    CHECK(rigid.metrics[0].check == metrics::Check::not_comparable);
+    CHECK_THAT(rigid.metrics[0].basis, Catch::Contains("beats friction") && Catch::Contains("0.24"));
+    CHECK_FALSE(kind().curve(s, {true}, t).empty());
+}
