@@ -112,6 +112,17 @@ oracle::HousnerBlock housner_block(const Scene& scene, const Vec3& axis) {
     return {0.5 * (hi - lo), 0.5 * (zhi - zlo), gravity(scene)};
 }
 
+std::function<Vec3(double)> reference_drive(const Scene& scene) {
+    const int a = scene.reference->block;
+    const double m = block_mass(scene, a);
+    return [&scene, a, m](double t) {
+        Vec3 f = Vec3::Zero();
+        for (const auto& l : scene.loads)
+            if (l.block == a) f += l.factor(t) * l.force;
+        return Vec3(f / m);
+    };
+}
+
 void require_horizontal_base(const Scene& scene, const std::string& kind) {
     const Vec3 g = scene.gravity.normalized();
     // 1e-3 rad: a plane written to four decimals in degrees

@@ -1,6 +1,7 @@
 #pragma once
 /// Helpers shared by the case analyses: block mass, contact face area, signals from samples.
 
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -17,6 +18,10 @@ double bottom_area(const Scene& scene, int b);
 /// the smaller bottom-face area of the reference block and the first fixed block, m² (the face-on-
 /// face contact area of the paper's stacked cases)
 double contact_area(const Scene& scene);
+/// the reference block's applied force per unit mass at time t (m/s², world): every load on it,
+/// a ground motion's −m·a_g among them (point loads as if at the centre of mass); it reads
+/// `scene`, which must outlive it
+std::function<Vec3(double)> reference_drive(const Scene& scene);
 /// |gravity|, m/s²
 double gravity(const Scene& scene);
 /// index of the reference block among the free blocks (Sample::blocks order)

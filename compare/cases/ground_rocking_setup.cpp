@@ -22,16 +22,14 @@ Error refuse(const Scene& scene, const std::string& what) {
 }
 
 /// the block's loads per unit mass, their breaks and end; each must act at the centre of mass
-void read_drive(const Scene& scene, const BlockDef& d, GroundSetup& out) {
+/// (within 1e-9 of the block's size, m)
+void read_drive(const Scene& scene, const BlockDef& d, double size, GroundSetup& out) {
     const int a = scene.reference->block;
-    const double m = block_mass(scene, a);
-    Vec3 lo = Vec3::Constant(1e300), hi = Vec3::Constant(-1e300);
-    for (const auto& c : d.corners) lo = lo.cwiseMin(c), hi = hi.cwiseMax(c);
     const Vec3 centre = mass_properties(d.corners, 1.0).centre;
     bool lasting = false;
     for (const auto& l : scene.loads) {
         if (l.block != a) continue;
-        if (!l.body && (l.point - centre).norm() > 1e-9 * (hi - lo).maxCoeff())
+        if (!l.body && (l.point - centre).norm() > 1e-9 * size)
             throw refuse(scene, "a load on block '" + d.name +
                                     "' acts off its centre of mass: the oracles drive the block at its centre (a "
                                     "[ground_motion], or loads with point = \"centre\")");
@@ -47,12 +45,7 @@ void read_drive(const Scene& scene, const BlockDef& d, GroundSetup& out) {
     if (lasting) out.end = std::max(out.end, scene.run.duration);
     std::sort(out.breaks.begin(), out.breaks.end());
     out.breaks.erase(std::unique(out.breaks.begin(), out.breaks.end()), out.breaks.end());
-    out.drive = [&scene, a, m](double t) {
-        Vec3 f = Vec3::Zero();
-        for (const auto& l : scene.loads)
-            if (l.block == a) f += l.factor(t) * l.force;
-        return Vec3(f / m);
-    };
+    out.drive = reference_drive(scene);
 }
 
 /// the one horizontal direction of the drive (it is linear between its breaks, so sampling them
@@ -63,14 +56,15 @@ void read_direction(const Scene& scene, const BlockDef& d, GroundSetup& out) {
     Vec3 largest = Vec3::Zero();
     for (double t : at) {
         const Vec3 f = out.drive(t), h(f.x(), f.y(), 0.0);
-        if (h.norm() > largest.norm()) largest = h;
-        // a ratio of two linear pieces is monotonic on each: its largest is at a break
-        if (gravity(scene) - f.z() > 0.0) out.friction_demand = std::max(out.friction_demand, h.norm() / (gravity(scene) - f.z()));
-        if (gravity(scene) - f.z() <= 0.0) {
+        const double normal = gravity(scene) - f.z();
+        if (normal <= 0.0) {
             char buf[160];
             std::snprintf(buf, sizeof buf, "the drive's vertical part lifts the block off at t = %.6g s", t);
             throw refuse(scene, buf);
         }
+        if (h.norm() > largest.norm()) largest = h;
+        // a ratio of two linear pieces is monotonic on each: its largest is at a break
+        out.friction_demand = std::max(out.friction_demand, h.norm() / normal);
     }
     if (!(largest.norm() > 0.0)) throw refuse(scene, "block '" + d.name + "' has no horizontal drive to rock it");
     out.dir = largest.normalized();
@@ -155,7 +149,7 @@ GroundSetup read_ground_setup(const Scene& scene) {
     require_support(scene, d);
     GroundSetup out;
     out.free = free_index(scene, a);
-    read_drive(scene, d, out);
+    read_drive(scene, d, (hi - lo).maxCoeff(), out);
     read_direction(scene, d, out);
     out.alpha = housner_block(scene, out.axis_block).alpha();
     return out;

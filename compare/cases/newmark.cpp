@@ -14,25 +14,12 @@ namespace cairn::cases {
 
 namespace {
 
-/// the reference block's applied force per unit mass at time t (m/s², world): every load on it
-/// (point loads as if at the centre of mass: the oracle does not rock)
-std::function<Vec3(double)> drive(const Scene& scene) {
-    const int a = scene.reference->block;
-    const double m = block_mass(scene, a);
-    return [&scene, a, m](double t) {
-        Vec3 f = Vec3::Zero();
-        for (const auto& l : scene.loads)
-            if (l.block == a) f += l.factor(t) * l.force;
-        return Vec3(f / m);
-    };
-}
-
 void check_newmark(const Scene& scene) { require_horizontal_base(scene, "newmark"); }
 
 /// the oracle's run over the scene's duration
 oracle::SlidingHistory oracle_run(const Scene& scene) {
     check_newmark(scene);
-    return oracle::newmark_slide(drive(scene), gravity(scene), scene.contact.friction, scene.run.duration);
+    return oracle::newmark_slide(reference_drive(scene), gravity(scene), scene.contact.friction, scene.run.duration);
 }
 
 /// the largest horizontal drive per unit mass (m/s²) and its unit direction (x when there is none),
@@ -43,7 +30,7 @@ struct LargestDrive {
 };
 
 LargestDrive largest_drive(const Scene& scene, const oracle::SlidingHistory& h) {
-    const auto f = drive(scene);
+    const auto f = reference_drive(scene);
     LargestDrive out;
     for (size_t i = 0; i < h.t.size(); i += 10) {
         const Vec3 d = f(h.t[i]);
@@ -132,7 +119,7 @@ CaseAnalysis analyse_newmark(const Scene& scene, const std::vector<Sample>& s, C
             const double w = std::sqrt(scene.contact.ks * contact_area(scene) / m);
             const double stretch = scene.contact.friction * m * gravity(scene) / (scene.contact.ks * contact_area(scene));
             const size_t lag = std::max<size_t>(1, size_t(std::lround(2.0 * M_PI / w / (h.t[1] - h.t[0]))));
-            const auto f = drive(scene);
+            const auto f = reference_drive(scene);
             double jump = 0.0;
             for (size_t i = 0; i + lag < h.t.size(); ++i) {
                 const Vec3 d0 = f(h.t[i]), d1 = f(h.t[i + lag]);

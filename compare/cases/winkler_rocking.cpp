@@ -17,6 +17,7 @@ namespace cairn::cases {
 
 namespace {
 
+/// the Winkler oracle of the reference block about the reference's rocking axis
 oracle::WinklerRocking winkler_block(const Scene& scene, ContactKind contact) {
     return winkler_model(scene, contact, rocking_axis(scene));
 }
