@@ -130,30 +130,39 @@ std::optional<Vec3> layer_axis(const Scene& scene) {
 
 }  // namespace
 
-std::optional<oracle::BlockStack> centred_stack(const Scene& scene) {
+std::optional<oracle::BlockStack> centred_stack(const Scene& scene, std::string* why) {
+    auto refuse = [&](const std::string& reason) -> std::optional<oracle::BlockStack> {
+        if (why) *why = reason;
+        return std::nullopt;
+    };
     const auto push = push_direction(scene);
+    if (!push) return refuse("ground_motion: one record along a horizontal direction is needed");
     const auto axis = layer_axis(scene);
-    if (!push || !axis) return std::nullopt;
+    if (!axis) return refuse("blocks: no free block stands with a horizontal axis");
     const Vec3 up = -scene.gravity.normalized(), across = up.cross(*axis);
     const double angle = std::atan2(push->dot(across), push->dot(*axis));
     // along one of the layers' axes (0 or 1), or -1 for a push at an angle to both
     const int push_axis = std::abs(std::sin(angle)) < 1e-9 ? 0 : std::abs(std::cos(angle)) < 1e-9 ? 1 : -1;
     const auto layers = layers_of(scene, *axis);
-    if (layers.empty()) return std::nullopt;
+    if (layers.empty()) return refuse("blocks: no free block");
     const LayerBounds& first = layers.front();
     const double height = layers.back().hi[2] - first.lo[2];
     for (size_t k = 0; k < layers.size(); ++k) {
         const LayerBounds& l = layers[k];
+        const std::string layer = "blocks: the layer " + std::to_string(k + 1) + " from the bottom ";
         const double box = (l.hi[0] - l.lo[0]) * (l.hi[1] - l.lo[1]) * (l.hi[2] - l.lo[2]);
-        if (std::abs(l.volume - box) > 1e-3 * box) return std::nullopt;   // gaps, or blocks not square to each other
-        if (k > 0 && std::abs(l.lo[2] - layers[k - 1].hi[2]) > 1e-6 * height) return std::nullopt;   // not resting on the one below
+        if (std::abs(l.volume - box) > 1e-3 * box)
+            return refuse(layer + "has gaps or blocks not square to each other (not one full box)");
+        if (k > 0 && std::abs(l.lo[2] - layers[k - 1].hi[2]) > 1e-6 * height)
+            return refuse(layer + "does not rest on the one below");
         // a course of several blocks turns as one only pushed out of its plane (in its plane, or
         // at an angle to it, its blocks rock and slide apart, which the layers do not model)
         if (l.blocks > 1 && (push_axis < 0 || l.hi[push_axis] - l.lo[push_axis] > l.hi[1 - push_axis] - l.lo[1 - push_axis]))
-            return std::nullopt;
+            return refuse(layer + "holds several blocks and is pushed in its plane (its blocks rock apart; the layers "
+                                  "turn as one only pushed out of plane)");
         for (int a : {0, 1})   // centred on the first layer's vertical axis
             if (std::abs((l.lo[a] + l.hi[a]) - (first.lo[a] + first.hi[a])) > 0.02 * (first.hi[a] - first.lo[a]))
-                return std::nullopt;
+                return refuse(layer + "is off the first layer's vertical axis by more than 1 % of its width");
     }
     // on a fixed block whose top is the first layer's bottom and which runs past it along the push
     // (past both its sides for a push at an angle: it tips over a corner)
@@ -174,8 +183,26 @@ std::optional<oracle::BlockStack> centred_stack(const Scene& scene) {
             return stack;
         }
     }
-    return std::nullopt;
+    return refuse("blocks: no fixed block under the first layer that runs past it along the push");
 }
+
+namespace {
+
+/// refuses, naming the key, a pushover scene the stack oracle does not model: not a centred stack,
+/// or pushed at an angle to its layers' sides (it would tip over a corner, which the ramp's
+/// monolith, turning about an edge, does not model)
+void check_pushover(const Scene& scene) {
+    std::string why;
+    const auto stack = centred_stack(scene, &why);
+    if (!stack) throw Error(scene.source + ": reference.kind = \"pushover\": " + why);
+    const double s = std::abs(std::sin(stack->push_angle)), c = std::abs(std::cos(stack->push_angle));
+    if (std::min(s, c) > 1e-9)
+        throw Error(scene.source + ": reference.kind = \"pushover\": ground_motion.direction is at an angle to the "
+                    "layers' sides: the stack would tip over a corner, which the pushover reference does not model "
+                    "(turn the record along a side)");
+}
+
+}  // namespace
 
 CaseAnalysis analyse_pushover(const Scene& scene, const std::vector<Sample>& s, ContactKind contact) {
     using namespace metrics;
@@ -215,7 +242,7 @@ CaseAnalysis analyse_pushover(const Scene& scene, const std::vector<Sample>& s, 
 // kind "pushover": no reference curve
 static const CaseKind& pushover_kind() {
     static const FunctionKind k("pushover", {"threshold"}, analyse_pushover, nullptr, rigid_contact_only,
-                                "rotation passes the threshold");
+                                "rotation passes the threshold", check_pushover);
     return k;
 }
 

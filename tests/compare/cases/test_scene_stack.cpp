@@ -4,7 +4,9 @@
 
 #include <cmath>
 
+#include "cases/case_kind.hpp"
 #include "cases/scene_stack.hpp"
+#include "error.hpp"
 #include "geometry/hexahedron.hpp"
 #include "support/scene_builder.hpp"
 
@@ -112,4 +114,30 @@ TEST_CASE("scene stack: a column shaken at an angle to its faces tips over a cor
     };
     CHECK_FALSE(cases::centred_stack(narrow(Vec3(c, s, 0))));
     CHECK(cases::centred_stack(narrow(Vec3::UnitX())));   // pushed along x it runs past the drum
+}
+
+TEST_CASE("pushover reference: a scene the stack oracle does not model is refused before any run, naming the key",
+          "[compare][stack]") {
+    const cases::CaseKind& kind = cases::case_kind("pushover", "test");
+    auto refusal = [&](const Scene& s) {
+        try {
+            kind.check(s);
+        } catch (const Error& e) {
+            return std::string(e.what());
+        }
+        return std::string();
+    };
+    CHECK(refusal(column()).empty());                 // a centred column pushed along a side
+    CHECK(refusal(course(Vec3::UnitY())).empty());    // a course pushed out of its plane
+    // in its plane the course's bricks rock apart: B/H of the whole course would be wrong
+    CHECK_THAT(refusal(course(Vec3::UnitX())), Catch::Contains("pushed in its plane"));
+    Scene off = column();
+    off.blocks[1].position.x() += 0.02;
+    CHECK_THAT(refusal(off), Catch::Contains("layer 2 from the bottom is off"));
+    const double c = std::cos(kPi / 6), s = std::sin(kPi / 6);
+    CHECK_THAT(refusal(column(Vec3(c, s, 0))), Catch::Contains("ground_motion.direction is at an angle"));
+    CHECK_THAT(refusal(column(Vec3::UnitZ())), Catch::Contains("ground_motion: one record along a horizontal"));
+    Scene floating = column();
+    floating.blocks[3].position.z() -= 0.1;
+    CHECK_THAT(refusal(floating), Catch::Contains("no fixed block under the first layer"));
 }
