@@ -61,7 +61,7 @@ CaseAnalysis analyse_arch(const Scene& scene, const std::vector<Sample>& s, Cont
 // kind "arch": no reference curve
 static const CaseKind& arch_kind() {
     static const FunctionKind k("arch", {"stands", "thickness"}, analyse_arch, nullptr, rigid_contact_only,
-                                "crown fell by the thickness");
+                                "crown fell by the thickness", [](const Scene& s) { require_drive_modelled(s, "arch", {}); });
     return k;
 }
 

@@ -123,6 +123,20 @@ std::function<Vec3(double)> reference_drive(const Scene& scene) {
     };
 }
 
+void require_drive_modelled(const Scene& scene, const std::string& kind, DriveModelled modelled) {
+    const std::string head = scene.source + ": reference.kind = \"" + kind + "\": ";
+    if (scene.ground_motion)
+        throw Error(head + "[ground_motion]: the " + kind + " reference does not model a ground motion");
+    for (const auto& l : scene.loads)
+        if (!modelled.loads_on_reference || l.block != scene.reference->block)
+            throw Error(head + "[loads]: a load on block '" + scene.blocks.at(size_t(l.block)).name + "' is not modelled by the " +
+                        kind + " reference" + (modelled.loads_on_reference ? " (only loads on its block are)" : ""));
+    const BlockDef& d = scene.blocks.at(size_t(scene.reference->block));
+    if (!modelled.initial_velocity && (d.velocity.norm() > 0.0 || d.angular_velocity.norm() > 0.0))
+        throw Error(head + "blocks." + d.name + ".velocity/angular_velocity: the " + kind +
+                    " reference releases its block at rest");
+}
+
 void require_horizontal_base(const Scene& scene, const std::string& kind) {
     const Vec3 g = scene.gravity.normalized();
     // 1e-3 rad: a plane written to four decimals in degrees

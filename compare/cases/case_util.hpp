@@ -42,6 +42,15 @@ oracle::HousnerBlock housner_block(const Scene& scene, const Vec3& axis);
 /// base) stands upright within 1e-3 rad
 void require_horizontal_base(const Scene& scene, const std::string& kind);
 
+/// what a kind's oracle models of the scene's drive, beyond gravity
+struct DriveModelled {
+    bool loads_on_reference = false;   ///< the `[loads]` on the reference block (no other load)
+    bool initial_velocity = false;     ///< the reference block's initial velocity and angular velocity
+};
+/// throws cairn::Error naming `kind` and the key when the scene drives its blocks in a way the
+/// kind's oracle leaves out: a `[ground_motion]`, a load it does not model, or an initial velocity
+void require_drive_modelled(const Scene& scene, const std::string& kind, DriveModelled modelled);
+
 /// component c (0 x, 1 y, 2 z) of probe p, minus its value at t = 0 when `relative`
 metrics::Series probe_series(const std::vector<Sample>& s, int p, int c, bool relative);
 /// component c of the centre of mass of free block f, minus its value at t = 0 when `relative`

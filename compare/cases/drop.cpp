@@ -104,12 +104,14 @@ CaseAnalysis analyse_drop(const Scene& scene, const std::vector<Sample>& s, Cont
 
 // kinds "rest" (a) and "impact" (b): the reference is the penalty spring kn·A
 static const CaseKind& rest_kind() {
-    static const FunctionKind k("rest", {}, analyse_drop, drop_curve, matched_contact_only, "first peak penetration");
+    static const FunctionKind k("rest", {}, analyse_drop, drop_curve, matched_contact_only, "first peak penetration",
+                                [](const Scene& s) { require_drive_modelled(s, "rest", {}); });
     return k;
 }
 
 static const CaseKind& impact_kind() {
-    static const FunctionKind k("impact", {"gap"}, analyse_drop, drop_curve, matched_contact_only, "first contact");
+    static const FunctionKind k("impact", {"gap"}, analyse_drop, drop_curve, matched_contact_only, "first contact",
+                                [](const Scene& s) { require_drive_modelled(s, "impact", {}); });
     return k;
 }
 

@@ -1,11 +1,13 @@
 // case (c): a block pushed by H on a flat base, sliding (H > μW) or holding (H < μW)
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 
 #include "analytic/oracles.hpp"
 #include "analytic/winkler_block.hpp"
 #include "cases/case_util.hpp"
 #include "cases/case_kind.hpp"
+#include "error.hpp"
 #include "geometry/hexahedron.hpp"
 
 namespace cairn::cases {
@@ -17,6 +19,24 @@ const LoadDef* pull(const Scene& scene) {
     for (const auto& l : scene.loads)
         if (l.block == scene.reference->block) return &l;
     return nullptr;
+}
+
+/// refuses a drive the friction oracle leaves out: a ground motion, loads on other blocks, an
+/// initial velocity, or loads on the block whose sum is not the reference's horizontal `force`
+void check_friction(const Scene& scene) {
+    require_drive_modelled(scene, scene.reference->kind, {true, false});
+    Vec3 sum = Vec3::Zero();
+    for (const auto& l : scene.loads) sum += l.force;
+    const Vec3 up = -scene.gravity.normalized();
+    const double horizontal = (sum - sum.dot(up) * up).norm(), H = scene.reference->values.at("force");
+    // 1e-6 of the force: a value written to seven digits
+    if (std::abs(sum.dot(up)) > 1e-6 * sum.norm() || std::abs(horizontal - H) > 1e-6 * std::max(H, horizontal)) {
+        char why[200];
+        std::snprintf(why, sizeof why, "the loads on its block sum to %.7g N horizontal and %.7g N vertical", horizontal,
+                      sum.dot(up));
+        throw Error(scene.source + ": reference.force = " + std::to_string(H) + " N: " + why +
+                    "; the friction reference models one horizontal force of that size");
+    }
 }
 
 /// the reference block on a Winkler base with the scene's law, and the height (m) of the load above
@@ -134,13 +154,13 @@ CaseAnalysis analyse_friction(const Scene& scene, const std::vector<Sample>& s, 
 // springs have no elastic stick
 static const CaseKind& slide_kind() {
     static const FunctionKind k("slide", {"force"}, analyse_friction, friction_curve, rigid_contact_only,
-                                "slid half the reference distance");
+                                "slid half the reference distance", check_friction);
     return k;
 }
 
 static const CaseKind& stick_kind() {
     static const FunctionKind k("stick", {"force"}, analyse_friction, friction_curve, rigid_contact_only,
-                                "none (the block holds)");
+                                "none (the block holds)", check_friction);
     return k;
 }
 

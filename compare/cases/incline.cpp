@@ -88,7 +88,8 @@ CaseAnalysis analyse_incline(const Scene& scene, const std::vector<Sample>& s, C
 // kind "incline": Coulomb's law holds for rigid contact
 static const CaseKind& incline_kind() {
     static const FunctionKind k("incline", {"angle"}, analyse_incline, incline_curve, rigid_contact_only,
-                                "slid half the reference distance");
+                                "slid half the reference distance",
+                                [](const Scene& s) { require_drive_modelled(s, "incline", {}); });
     return k;
 }
 

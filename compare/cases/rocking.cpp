@@ -219,7 +219,8 @@ std::vector<std::string> rocking_modes(const Scene& scene) {
 // kind "housner" (e)
 static const CaseKind& housner_kind() {
     static const FunctionKind k("housner", {"theta0", "axis_x", "axis_y", "axis_z", "impacts"}, analyse_rocking,
-                                rocking_curve, rocking_modes, "first impact");
+                                rocking_curve, rocking_modes, "first impact",
+                                [](const Scene& s) { require_drive_modelled(s, "housner", {}); });
     return k;
 }
 

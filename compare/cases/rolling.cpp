@@ -101,7 +101,9 @@ CaseAnalysis analyse_rolling(const Scene& scene, const std::vector<Sample>& s, C
 
 // kind "rolling" (d): coarse oracles, no reference curve
 static const CaseKind& rolling_kind() {
-    static const FunctionKind k("rolling", {"slope"}, analyse_rolling, nullptr, rigid_contact_only, "first face crossed");
+    // the tumble starts from a small initial spin (the scene's perturbation)
+    static const FunctionKind k("rolling", {"slope"}, analyse_rolling, nullptr, rigid_contact_only, "first face crossed",
+                                [](const Scene& s) { require_drive_modelled(s, "rolling", {false, true}); });
     return k;
 }
 

@@ -104,7 +104,8 @@ std::vector<std::string> rigid_beside(const Scene&) { return {"rigid"}; }
 
 static const CaseKind& winkler_kind() {
     static const FunctionKind k("winkler_rocking", {"theta0", "axis_x", "axis_y", "axis_z"}, analyse_winkler,
-                                winkler_curve, rigid_beside, "first impact");
+                                winkler_curve, rigid_beside, "first impact",
+                                [](const Scene& s) { require_drive_modelled(s, "winkler_rocking", {}); });
     return k;
 }
 
