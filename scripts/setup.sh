@@ -14,6 +14,7 @@ packages=(
   libfccp-dev                        # reading CSV
   catch2                             # tests (v2)
   libbenchmark-dev                   # benchmarks of kernels
+  libglpk-dev                        # linear programmes: the block limit analysis
   gnuplot-nox                        # figures of the report
   libbullet-dev libode-dev libmujoco-dev   # reference engines
   libsiconos-mechanics-dev           # the non-smooth contact dynamics engine (Siconos)
