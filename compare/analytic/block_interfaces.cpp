@@ -143,4 +143,33 @@ std::vector<BlockInterface> find_interfaces(const std::vector<Corners>& corners,
     return out;
 }
 
+std::vector<Vec3> inset_polygon(const std::vector<Vec3>& polygon, const Vec3& normal, double inset) {
+    if (inset <= 0.0 || polygon.size() < 3) return polygon;
+    // 2-D coordinates in the polygon's plane, counter-clockwise about `normal`
+    const Vec3 o = polygon[0], u = (polygon[1] - o).normalized(), v = normal.cross(u);
+    std::vector<Vec2> p;
+    for (const Vec3& x : polygon) p.emplace_back((x - o).dot(u), (x - o).dot(v));
+    if (signed_area2(p) < 0) std::reverse(p.begin(), p.end());
+    Vec2 centre = Vec2::Zero();
+    for (const Vec2& x : p) centre += x / double(p.size());
+    std::vector<Vec2> q = p;
+    for (size_t e = 0; e < p.size() && !q.empty(); ++e) {   // keep the side of each edge moved `inset` inward
+        const Vec2 a = p[e], edge = p[(e + 1) % p.size()] - a;
+        const double len = edge.norm();
+        std::vector<Vec2> kept;
+        for (size_t i = 0; i < q.size(); ++i) {
+            const Vec2& x = q[i];
+            const Vec2& y = q[(i + 1) % q.size()];
+            const double sx = cross2(edge, x - a) / len - inset, sy = cross2(edge, y - a) / len - inset;
+            if (sx >= 0) kept.push_back(x);
+            if ((sx >= 0) != (sy >= 0)) kept.push_back(x + (y - x) * (sx / (sx - sy)));
+        }
+        q = std::move(kept);
+    }
+    if (q.empty()) q = {centre};   // narrower than twice the inset: its force at its middle
+    std::vector<Vec3> out;
+    for (const Vec2& x : q) out.push_back(o + x.x() * u + x.y() * v);
+    return out;
+}
+
 }  // namespace cairn::oracle

@@ -28,4 +28,9 @@ struct BlockInterface {
 std::vector<BlockInterface> find_interfaces(const std::vector<Corners>& corners, const std::vector<bool>& fixed,
                                             double gap);
 
+/// the convex polygon (world, m, in the plane of unit `normal`) with every edge moved `inset` (m)
+/// inward: the part of a joint a compliant contact still carries at its edges (a hinge inset);
+/// a polygon narrower than twice the inset becomes its centre
+std::vector<Vec3> inset_polygon(const std::vector<Vec3>& polygon, const Vec3& normal, double inset);
+
 }  // namespace cairn::oracle

@@ -51,6 +51,7 @@ Vec3 first_tangent(const BlockInterface& c, const Vec3& live, const Vec3& gravit
         const Vec3 t = d - c.normal.dot(d) * c.normal;
         if (t.norm() > 1e-6 * d.norm()) return t.normalized();
     }
+    if (c.polygon.size() < 2) return c.normal.unitOrthogonal();   // an inset joint reduced to its centre
     const Vec3 e = c.polygon[1] - c.polygon[0];
     return (e - c.normal.dot(e) * c.normal).normalized();
 }
@@ -239,7 +240,7 @@ std::vector<LimitTwist> mechanism(glp_prob* g, const std::vector<LimitBlock>& bl
 }  // namespace
 
 LimitAnalysisResult collapse_multiplier(const std::vector<LimitBlock>& blocks, const Vec3& gravity,
-                                        const Vec3& live, double friction) {
+                                        const Vec3& live, double friction, double inset) {
     check_input(blocks, gravity, live, friction);
     LimitAnalysisResult result;
     // rows of the free blocks, their mean weight and size (the programme's units)
@@ -269,7 +270,8 @@ LimitAnalysisResult collapse_multiplier(const std::vector<LimitBlock>& blocks, c
     const double f0 = weight > 0.0 ? weight / free_blocks : 1.0, l0 = size / free_blocks;
 
     // contacts within 1e-5 of the assembly's size of each other: round-off of generated scenes
-    const auto interfaces = find_interfaces(corners, fixed, 1e-5 * (all.hi - all.lo).norm());
+    auto interfaces = find_interfaces(corners, fixed, 1e-5 * (all.hi - all.lo).norm());
+    for (BlockInterface& c : interfaces) c.polygon = inset_polygon(c.polygon, c.normal, inset);
     result.interfaces = int(interfaces.size());
     for (const BlockInterface& c : interfaces) result.contact_points += int(c.polygon.size());
     const Programme programme = assemble(blocks, row, interfaces, gravity, live, friction, f0, l0);

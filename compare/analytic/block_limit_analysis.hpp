@@ -50,10 +50,11 @@ struct LimitAnalysisResult {
 };
 
 /// the collapse multiplier of the blocks under gravity (m/s², world) and the live load λ·m·live
-/// on every free block (live in m/s², world), with friction coefficient μ ≥ 0 on every joint;
-/// throws cairn::Error on bad input or when GLPK fails
+/// on every free block (live in m/s², world), with friction coefficient μ ≥ 0 on every joint and
+/// every joint's contact polygon moved `inset` (m) inward from its edges (0: the rigid joints; a
+/// compliant contact hinges inside its edge); throws cairn::Error on bad input or when GLPK fails
 LimitAnalysisResult collapse_multiplier(const std::vector<LimitBlock>& blocks, const Vec3& gravity,
-                                        const Vec3& live, double friction);
+                                        const Vec3& live, double friction, double inset = 0.0);
 
 /// the scene's blocks as LimitBlocks: world corners at t = 0, mass and centre from the material's
 /// density

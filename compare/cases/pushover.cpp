@@ -6,6 +6,7 @@
 #include <optional>
 #include <vector>
 
+#include "cases/assembly_pushover.hpp"
 #include "cases/case_kind.hpp"
 #include "cases/case_util.hpp"
 #include "cases/structure_kinds.hpp"
@@ -48,6 +49,7 @@ struct LayerBounds {
     double mass = 0.0;     ///< kg
     double volume = 0.0;   ///< m³, the blocks' own (less than the bounds' where a course has gaps)
     int blocks = 0;        ///< how many
+    double thinnest[2] = {INFINITY, INFINITY};   ///< m: the least extent of one of its blocks along and across
 };
 
 /// the direction of the scene's one horizontal record, or nothing
@@ -77,10 +79,13 @@ std::vector<LayerBounds> layers_of(const Scene& scene, const Vec3& along) {
     for (const auto& [key, ids] : by_bottom) {
         LayerBounds l;
         for (int i : ids) {
+            double lo[2] = {INFINITY, INFINITY}, hi[2] = {-INFINITY, -INFINITY};
             for (const auto& p : world_corners(scene.blocks[size_t(i)])) {
                 const double v[3] = {p.dot(along), p.dot(across), p.dot(up)};
                 for (int k = 0; k < 3; ++k) l.lo[k] = std::min(l.lo[k], v[k]), l.hi[k] = std::max(l.hi[k], v[k]);
+                for (int k = 0; k < 2; ++k) lo[k] = std::min(lo[k], v[k]), hi[k] = std::max(hi[k], v[k]);
             }
+            for (int k = 0; k < 2; ++k) l.thinnest[k] = std::min(l.thinnest[k], hi[k] - lo[k]);
             l.mass += block_mass(scene, i);
             ++l.blocks;
             l.volume += mass_properties(scene.blocks[size_t(i)].corners, 1.0).volume;
@@ -155,11 +160,13 @@ std::optional<oracle::BlockStack> centred_stack(const Scene& scene, std::string*
             return refuse(layer + "has gaps or blocks not square to each other (not one full box)");
         if (k > 0 && std::abs(l.lo[2] - layers[k - 1].hi[2]) > 1e-6 * height)
             return refuse(layer + "does not rest on the one below");
-        // a course of several blocks turns as one only pushed out of its plane (in its plane, or
-        // at an angle to it, its blocks rock and slide apart, which the layers do not model)
-        if (l.blocks > 1 && (push_axis < 0 || l.hi[push_axis] - l.lo[push_axis] > l.hi[1 - push_axis] - l.lo[1 - push_axis]))
-            return refuse(layer + "holds several blocks and is pushed in its plane (its blocks rock apart; the layers "
-                                  "turn as one only pushed out of plane)");
+        // a course of several blocks turns as one only where each of them spans the course along
+        // the push (a wall pushed out of its plane); pushed across their head joints, or at an
+        // angle to them, its blocks lean on each other and rock apart, which the layers do not model
+        if (l.blocks > 1 &&
+            (push_axis < 0 || l.thinnest[push_axis] < (1 - 1e-6) * (l.hi[push_axis] - l.lo[push_axis])))
+            return refuse(layer + "holds several blocks that do not each span it along the push (pushed across "
+                                  "their joints they rock apart; the layers turn as one only pushed along their joints)");
         for (int a : {0, 1})   // centred on the first layer's vertical axis
             if (std::abs((l.lo[a] + l.hi[a]) - (first.lo[a] + first.hi[a])) > 0.02 * (first.hi[a] - first.lo[a]))
                 return refuse(layer + "is off the first layer's vertical axis by more than 1 % of its width");
@@ -188,18 +195,19 @@ std::optional<oracle::BlockStack> centred_stack(const Scene& scene, std::string*
 
 namespace {
 
-/// refuses, naming the key, a pushover scene the stack oracle does not model: not a centred stack,
-/// or pushed at an angle to its layers' sides (it would tip over a corner, which the ramp's
-/// monolith, turning about an edge, does not model)
+/// the centred stack of a scene pushed along one of its layers' sides, or nothing: the stack
+/// oracle's monolith turns about an edge; anything else is read as a block assembly
+std::optional<oracle::BlockStack> stack_along_a_side(const Scene& scene) {
+    auto stack = centred_stack(scene);
+    if (stack && std::min(std::abs(std::sin(stack->push_angle)), std::abs(std::cos(stack->push_angle))) > 1e-9)
+        stack.reset();
+    return stack;
+}
+
+/// refuses, naming the key, a pushover scene neither oracle models (assembly_pushover.hpp says what)
 void check_pushover(const Scene& scene) {
-    std::string why;
-    const auto stack = centred_stack(scene, &why);
-    if (!stack) throw Error(scene.source + ": reference.kind = \"pushover\": " + why);
-    const double s = std::abs(std::sin(stack->push_angle)), c = std::abs(std::cos(stack->push_angle));
-    if (std::min(s, c) > 1e-9)
-        throw Error(scene.source + ": reference.kind = \"pushover\": ground_motion.direction is at an angle to the "
-                    "layers' sides: the stack would tip over a corner, which the pushover reference does not model "
-                    "(turn the record along a side)");
+    require_pushover_drive(scene);
+    if (!stack_along_a_side(scene)) assembly_pushover(scene);
 }
 
 }  // namespace
@@ -208,6 +216,7 @@ CaseAnalysis analyse_pushover(const Scene& scene, const std::vector<Sample>& s, 
     using namespace metrics;
     const auto& values = scene.reference->values;
     const double threshold = values.count("threshold") ? values.at("threshold") : kDefaultThreshold;
+    if (!stack_along_a_side(scene)) return analyse_assembly_pushover(scene, s, contact, threshold);
     const oracle::BlockStack stack = scene_stack(scene);
     const double quasi_static = stack.rigid_multiplier();
     const double t_ref = stack.rigid_ramp_time([&](double t) { return ground_multiplier(scene, t); }, threshold,

@@ -312,3 +312,24 @@ TEST_CASE("limit analysis: bad input is refused", "[oracle][limit]") {
     CHECK(std::isinf(none.lambda));
     CHECK(none.stands_at_zero);
 }
+
+TEST_CASE("limit analysis: joints inset from their edges, as compliant contacts hinge", "[oracle][limit]") {
+    // a 0.4 × 0.4 × 0.4 m block on the ground, its base inset δ: it tips about a line δ inside
+    // its edge, λ = (w/2 − δ)/(h/2)
+    const std::vector<LimitBlock> cube{ground(), box(Vec3(0.4, 0.4, 0.4), Vec3(0, 0, 0.2))};
+    for (double d : {0.0, 0.001, 0.01, 0.1})
+        CHECK(collapse_multiplier(cube, kGravity, push(), 2.0, d).lambda == Approx((0.2 - d) / 0.2).epsilon(1e-9));
+    // a base narrower than twice the inset carries its force at its middle: λ = 0
+    CHECK(collapse_multiplier(cube, kGravity, push(), 2.0, 0.3).lambda == Approx(0.0).margin(1e-9));
+    // the three-drum column: every bed joint inset, the base governs: (B/2 − δ)/(H/2)
+    std::vector<LimitBlock> column{ground()};
+    for (int i = 0; i < 3; ++i) column.push_back(box(Vec3(0.4, 0.4, 0.5), Vec3(0, 0, 0.25 + 0.5 * i)));
+    CHECK(collapse_multiplier(column, kGravity, push(), 2.0, 0.002).lambda == Approx(0.198 / 0.75).epsilon(1e-9));
+    // the arch near its least thickness loses far more to the same inset than the column does
+    const auto a = arch(21, 0.15, false);
+    const double rigid = collapse_multiplier(a, kGravity, push(), 1.0).lambda;
+    const double inset = collapse_multiplier(a, kGravity, push(), 1.0, 0.001).lambda;
+    INFO("arch: " << rigid << " → " << inset << " with 1 mm");
+    CHECK(inset < rigid * 0.98);
+    CHECK(inset > 0.0);
+}
