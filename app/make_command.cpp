@@ -8,8 +8,10 @@
 #include <CLI/CLI.hpp>
 
 #include "analytic/arch_thrust.hpp"
+#include "analytic/block_limit_analysis.hpp"
 #include "commands.hpp"
 #include "error.hpp"
+#include "geometry/overlap.hpp"
 #include "output/atomic_write.hpp"
 #include "scene/arch_builder.hpp"
 #include "scene/column_builder.hpp"
@@ -46,8 +48,9 @@ const std::map<std::string, std::vector<Param>>& generator_params() {
           {"pointed", "0", Unit::ratio,
            "pointed (two-centred) arch: each half's centre offset from the axis as a fraction of the span 2R; 0 round"},
           {"reference", "none", Unit::choice,
-           "none, or limit-analysis (semicircular only): a [reference] of kind arch that expects the arch to stand "
-           "when t/R exceeds the least t/R at which a thrust line fits N voussoirs, else to collapse"}}},
+           "none, or limit-analysis: a [reference] of kind arch that expects the arch to stand when t/R exceeds the "
+           "least t/R at which a thrust line fits N voussoirs (round), or when a limit analysis of its blocks finds a "
+           "thrust state (segmental, pointed), else to collapse"}}},
         {"wall",
          {{"courses", "6", Unit::count, "courses"},
           {"bricks", "6", Unit::count, "whole bricks per course"},
@@ -302,17 +305,34 @@ Generated generate(const std::string& kind, const std::map<std::string, double>&
             // the middle of the crown's intrados, on the keystone (odd N) or left of the crown joint
             o << "[probes.crown]   # middle of the crown's intrados\nblock = \"V" << (a.voussoirs + 1) / 2
               << "\"\npoint = [0.0, 0.0, " << a.radius - 0.5 * a.thickness << "]   # m, world\n\n";
+        } else {
+            // the centre of the keystone (odd N) or of the voussoir left of the crown joint
+            const std::string name = "V" + std::to_string((a.voussoirs + 1) / 2);
+            for (const auto& b : s.blocks)
+                if (b.name == name) {
+                    const Vec3 c = mass_properties(placed_corners(b.corners, b.position, b.orientation), 1.0).centre;
+                    o << "[probes.crown]   # centre of the voussoir at the crown\nblock = \"" << name << "\"\npoint = ["
+                      << c.x() << ", " << c.y() << ", " << c.z() << "]   # m, world\n\n";
+                }
         }
         const bool semicircular = a.pointed == 0.0 && a.angle >= M_PI;
         const double least = semicircular ? oracle::SemicircularArch{a.voussoirs}.minimum_thickness() : NAN;
         if (semicircular) g.warning = arch_stiffness_warning(a, s.contact.kn, v.at("density"), least);
         if (text.at("reference") == "limit-analysis") {
-            if (!semicircular) throw Error("--reference limit-analysis needs a semicircular arch");
-            const bool stands = a.thickness / a.radius > least;
-            o << "[reference]   # t/R = " << a.thickness / a.radius << (stands ? " above" : " below")
-              << " the least t/R = " << least << " at which a thrust line fits " << a.voussoirs
-              << " voussoirs\nkind = \"arch\"\nblock = \"V" << (a.voussoirs + 1) / 2 << "\"\nstands = "
-              << (stands ? 1 : 0) << "\nthickness = " << a.thickness << "   # m\n";
+            // a round arch: the least t/R of its thrust line (tested against Milankovitch's); any
+            // other: whether the limit analysis of its blocks finds a thrust state (compare/analytic)
+            const bool stands = semicircular ? a.thickness / a.radius > least
+                                             : oracle::collapse_multiplier(oracle::limit_blocks(s), s.gravity, Vec3::Zero(),
+                                                                           s.contact.friction)
+                                                   .stands_at_zero;
+            if (semicircular)
+                o << "[reference]   # t/R = " << a.thickness / a.radius << (stands ? " above" : " below")
+                  << " the least t/R = " << least << " at which a thrust line fits " << a.voussoirs << " voussoirs\n";
+            else
+                o << "[reference]   # rigid-block limit analysis of these voussoirs (mu = " << s.contact.friction << "): "
+                  << (stands ? "a" : "no") << " thrust state under their weight\n";
+            o << "kind = \"arch\"\nblock = \"V" << (a.voussoirs + 1) / 2 << "\"\nstands = " << (stands ? 1 : 0)
+              << "\nthickness = " << a.thickness << "   # m\n";
         }
         g.extra = o.str();
     } else if (kind == "wall") {

@@ -2,23 +2,40 @@
 #include <algorithm>
 #include <cmath>
 
+#include "analytic/block_limit_analysis.hpp"
 #include "cases/case_kind.hpp"
 #include "cases/case_util.hpp"
 #include "cases/structure_kinds.hpp"
 #include "error.hpp"
+#include "output/number_format.hpp"
 
 namespace cairn::cases {
+
+namespace {
+
+/// whether a statically admissible state of the scene's blocks exists under gravity alone
+bool limit_analysis_stands(const Scene& scene) {
+    return oracle::collapse_multiplier(oracle::limit_blocks(scene), scene.gravity, Vec3::Zero(), scene.contact.friction)
+        .stands_at_zero;
+}
+
+}  // namespace
 
 CaseAnalysis analyse_arch(const Scene& scene, const std::vector<Sample>& s, ContactKind) {
     using namespace metrics;
     const auto& v = scene.reference->values;
-    if (!v.count("stands") || !v.count("thickness"))
-        throw Error(scene.source + ": an arch reference needs the values stands (1 or 0) and thickness (m)");
+    if (!v.count("thickness")) throw Error(scene.source + ": an arch reference needs the value thickness (m)");
     const int crown = probe_index(scene, "crown");
     if (crown < 0) throw Error(scene.source + ": an arch reference needs a probe named crown");
-    const bool stands = v.at("stands") != 0.0;
+    const bool admissible = limit_analysis_stands(scene);
+    const bool stands = v.count("stands") ? v.at("stands") != 0.0 : admissible;
     const double t = v.at("thickness");
     CaseAnalysis r;
+    const std::string la = "rigid-block limit analysis of the scene's blocks (μ = " + fixed_text(scene.contact.friction, 3) +
+                           "): a statically admissible state under gravity " + (admissible ? "exists" : "does not exist");
+    if (v.count("stands"))
+        r.metrics.push_back(info("stands (1) or collapses (0), as the scene states", "", stands ? 1.0 : 0.0,
+                                 admissible ? 1.0 : 0.0, la));
     Series z = probe_series(s, crown, 2, true);
     for (double& y : z.y) y = -y;   // settlement: downward positive
     r.measured = z;

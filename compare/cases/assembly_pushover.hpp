@@ -21,6 +21,7 @@ struct AssemblyPushover {
     double turn = 0.0;               ///< largest block rotation per unit amplitude q, rad/m
     double slip_share = 0.0;         ///< largest joint slip in the mechanism against its largest
                                      ///< contact-point speed: > 0.05, sliding takes part
+    bool friction_binds = false;     ///< with 10 % less friction λ falls: the static state leans on it
     int interfaces = 0;              ///< joints found, count
     /// the a/g at which the linearised mechanism, at rest until the record passes λ, has turned a
     /// block by `rotation` (rad); NaN if not within the run. Geometric softening only speeds the

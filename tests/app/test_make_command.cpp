@@ -165,3 +165,25 @@ TEST_CASE("cairn make arch warns when its joints are too soft for it to stand on
         CHECK_THAT(r.out, !Contains("# warning"));
     }
 }
+
+TEST_CASE("cairn make arch --reference limit-analysis: a pointed or segmental arch stands where its blocks' limit "
+          "analysis finds a thrust state",
+          "[app][make]") {
+    const auto dir = fresh_dir("make_arch_pointed");
+    // a pointed arch of 16 voussoirs (centres 0.1 of the span beyond the axis) needs t/R 0.0902
+    // (the LP, bisected), less than a round arch's 0.107: it stands at 0.10 and falls at 0.08
+    for (const auto& [ratio, stands] : {std::pair{"0.10", "stands = 1"}, std::pair{"0.08", "stands = 0"}}) {
+        const auto r = run_cairn(std::string("make arch --voussoirs 16 --radius 2m --pointed 0.1 --reference limit-analysis "
+                                             "--thickness-ratio ") + ratio,
+                                 dir);
+        REQUIRE(r.exit_code == 0);
+        CHECK_THAT(r.out, Contains(stands));
+        CHECK_THAT(r.out, Contains("[probes.crown]"));   // the arch kind's settlement probe
+    }
+    // a shallow segmental arch (120°) of the same thickness as a round arch that falls: it stands
+    const auto seg = run_cairn("make arch --voussoirs 15 --radius 3m --thickness-ratio 0.06 --angle 120deg "
+                               "--reference limit-analysis",
+                               dir);
+    REQUIRE(seg.exit_code == 0);
+    CHECK_THAT(seg.out, Contains("stands = 1"));
+}

@@ -145,3 +145,38 @@ TEST_CASE("assembly pushover: where joints slide in the mechanism the associativ
         CHECK(m.check == metrics::Check::info);
     }
 }
+
+TEST_CASE("assembly pushover: a static state that leans on friction is not judged from below", "[compare][pushover]") {
+    // a course of two bricks 0.2 long × 0.4 deep × 0.6 tall pushed along its row. At μ = 5 both
+    // turn as one, λ = 2b/h: the rear brick hangs on the head joint, its weight in friction of
+    // about W/(λW) = 1.5 times the joint's normal force, well inside μ; at μ = 0.7 the joint
+    // slips in the mechanism (λ = 0.6)
+    Scene s = test::stone_scene(0.6);
+    test::add_box(s, "L", Vec3(0.2, 0.4, 0.6), Vec3(-0.1, 0, 0.3), false);
+    test::add_box(s, "R", Vec3(0.2, 0.4, 0.6), Vec3(0.1, 0, 0.3), false);
+    test::add_box(s, "G", Vec3(2, 2, 0.5), Vec3(0, 0, -0.25), true);
+    GroundMotion g;
+    GroundComponent c;
+    c.acceleration.time = {0.0, 100.0};
+    c.acceleration.value = {0.0, 9.81};
+    g.components.push_back(c);
+    s.ground_motion = g;
+    s.run.duration = 100.0;
+    s.reference = ReferenceDef{"pushover", 0, {}};
+    const auto& kind = cases::case_kind("pushover", "test");
+    s.contact.friction = 5.0;
+    const auto stuck = cases::assembly_pushover(s);
+    CHECK(stuck.lambda == Approx(0.4 / 0.6).epsilon(1e-7));
+    CHECK_FALSE(stuck.friction_binds);
+    CHECK(stuck.slip_share < 0.05);
+    // it never turned although the record passed λ: a miss from above
+    CHECK(std::string(kind.analyse(s, run(s, 0.1, [](double) { return 0.0; }), {false}).metrics.back().verdict()) == "miss");
+    s.contact.friction = 0.7;
+    const auto slipping = cases::assembly_pushover(s);
+    CHECK((slipping.slip_share > 0.05 || slipping.friction_binds));
+    for (const auto& m : kind.analyse(s, run(s, 0.1, [](double) { return 0.0; }), {false}).metrics)
+        CHECK(m.check == metrics::Check::info);
+    // the column pushed at 30°: pure rocking, friction idle (0.8 far above the 0.31 it needs)
+    const double cs = std::cos(kPi / 6), sn = std::sin(kPi / 6);
+    CHECK_FALSE(cases::assembly_pushover(column(Vec3(cs, sn, 0), 2.5e-3, 160.0)).friction_binds);
+}

@@ -283,3 +283,22 @@ TEST_CASE("every shipped scene passes its kind's check; a drive a kind's oracle 
     loaded.loads.push_back(crown);
     CHECK_THAT(refusal(loaded), Catch::Contains("[loads]"));
 }
+
+TEST_CASE("arch reference: the shipped arches' stated verdicts are their blocks' limit analysis; without `stands` it "
+          "is the expectation",
+          "[cases]") {
+    for (const auto& [name, stands] : {std::pair{"structures/arch_thick", 1.0}, std::pair{"structures/arch_thin", 0.0}}) {
+        Scene s = shipped(name);
+        const auto& kind = cases::case_kind("arch", s.source);
+        const auto still_run = synthetic_run(s, 1.0, 1e-2, still, upright);
+        const auto a = kind.analyse(s, still_run, {false});
+        REQUIRE(a.metrics.front().check == metrics::Check::info);
+        CHECK(a.metrics.front().value == stands);       // as the scene states (1.1x / 0.93x the least t/R)
+        CHECK(a.metrics.front().reference == stands);   // as the LP finds
+        // the same scene without `stands` expects what the LP finds: an arch that does not move
+        // passes as standing and misses as collapsing
+        s.reference->values.erase("stands");
+        const auto b = kind.analyse(s, still_run, {false});
+        CHECK(std::string(b.metrics.front().verdict()) == (stands == 1.0 ? "pass" : "miss"));
+    }
+}
