@@ -4,6 +4,10 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <mutex>
+#include <optional>
+#include <utility>
+#include <vector>
 
 #include "analytic/block_interfaces.hpp"
 #include "analytic/block_limit_analysis.hpp"
@@ -11,6 +15,7 @@
 #include "error.hpp"
 #include "geometry/hexahedron.hpp"
 #include "output/number_format.hpp"
+#include "scene/scene_io.hpp"
 
 namespace cairn::cases {
 
@@ -75,8 +80,46 @@ void require_pushover_drive(const Scene& scene) {
             throw Error(head(scene) + "blocks." + b.name + ".velocity/angular_velocity: the pushover starts at rest");
 }
 
+namespace {
+
+/// the limit analyses of a scene (three linear programmes, seconds for a wall of hundreds of
+/// bricks), remembered by the scene's whole content for the analyses of its other variants
+class AnalysisMemo {
+public:
+    std::optional<AssemblyPushover> find(const std::string& key) {
+        std::lock_guard<std::mutex> lock(mutex_);
+        for (const auto& [k, v] : entries_)
+            if (k == key) return v;
+        return std::nullopt;
+    }
+    void keep(const std::string& key, const AssemblyPushover& value) {
+        std::lock_guard<std::mutex> lock(mutex_);
+        if (entries_.size() >= 4) entries_.erase(entries_.begin());   // bounded: a few scenes at a time
+        entries_.emplace_back(key, value);
+    }
+
+private:
+    std::mutex mutex_;
+    std::vector<std::pair<std::string, AssemblyPushover>> entries_;
+};
+
+AssemblyPushover analyse_limits(const Scene& scene);
+
+}  // namespace
+
 AssemblyPushover assembly_pushover(const Scene& scene) {
     require_pushover_drive(scene);
+    static AnalysisMemo memo;
+    const std::string key = scene_to_json(scene).dump();
+    if (auto known = memo.find(key)) return *known;
+    AssemblyPushover r = analyse_limits(scene);
+    memo.keep(key, r);
+    return r;
+}
+
+namespace {
+
+AssemblyPushover analyse_limits(const Scene& scene) {
     const Vec3 dir = scene.ground_motion->components.front().direction;
     AssemblyPushover r;
     r.record_sign = record_sign(scene);
@@ -122,6 +165,8 @@ AssemblyPushover assembly_pushover(const Scene& scene) {
     r.lambda_inset = oracle::collapse_multiplier(blocks, scene.gravity, live, scene.contact.friction, kInset).lambda;
     return r;
 }
+
+}  // namespace
 
 double AssemblyPushover::lagged_multiplier(const Scene& scene, double rotation) const {
     // semi-implicit Euler at 1e-4 s: the record is piecewise linear, the mechanism slow against it
