@@ -24,6 +24,8 @@ Scene column(const Vec3& direction = Vec3::UnitX()) {
     GroundMotion g;
     GroundComponent c;
     c.direction = direction;
+    c.acceleration.time = {0.0, 10.0};   // s: a ramp to 0.5 g
+    c.acceleration.value = {0.0, 4.905};
     g.components.push_back(c);
     s.ground_motion = g;
     return s;
