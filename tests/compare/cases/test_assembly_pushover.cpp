@@ -50,6 +50,24 @@ std::vector<Sample> run(const Scene& s, double dt, const std::function<double(do
     return out;
 }
 
+/// two bricks 0.2 long × 0.4 deep × 0.6 tall side by side along x on a slab, friction μ, under a
+/// ramp of 0.01 g/s along x for 100 s
+Scene two_bricks(double mu) {
+    Scene s = test::stone_scene(mu);
+    test::add_box(s, "L", Vec3(0.2, 0.4, 0.6), Vec3(-0.1, 0, 0.3), false);
+    test::add_box(s, "R", Vec3(0.2, 0.4, 0.6), Vec3(0.1, 0, 0.3), false);
+    test::add_box(s, "G", Vec3(2, 2, 0.5), Vec3(0, 0, -0.25), true);
+    GroundMotion g;
+    GroundComponent c;
+    c.acceleration.time = {0.0, 100.0};
+    c.acceleration.value = {0.0, 9.81};
+    g.components.push_back(c);
+    s.ground_motion = g;
+    s.run.duration = 100.0;
+    s.reference = ReferenceDef{"pushover", 0, {}};
+    return s;
+}
+
 const metrics::Metric& metric(const cases::CaseAnalysis& a, const std::string& part) {
     for (const auto& m : a.metrics)
         if (m.name.find(part) != std::string::npos) return m;
@@ -124,18 +142,7 @@ TEST_CASE("assembly pushover: where joints slide in the mechanism the associativ
     // two bricks 0.2 wide × 0.6 tall side by side, pushed along their row: at μ = 1 the rear one
     // leans on the front one and their head joint slips (λ = 0.6), so Coulomb's joints, which do
     // not dilate, collapse by another mechanism: both metrics shown, none judged
-    Scene s = test::stone_scene(1.0);
-    test::add_box(s, "L", Vec3(0.2, 0.4, 0.6), Vec3(-0.1, 0, 0.3), false);
-    test::add_box(s, "R", Vec3(0.2, 0.4, 0.6), Vec3(0.1, 0, 0.3), false);
-    test::add_box(s, "G", Vec3(2, 2, 0.5), Vec3(0, 0, -0.25), true);
-    GroundMotion g;
-    GroundComponent c;
-    c.acceleration.time = {0.0, 100.0};
-    c.acceleration.value = {0.0, 9.81};
-    g.components.push_back(c);
-    s.ground_motion = g;
-    s.run.duration = 100.0;
-    s.reference = ReferenceDef{"pushover", 0, {}};
+    const Scene s = two_bricks(1.0);
     const auto a = cases::assembly_pushover(s);
     CHECK(a.lambda == Approx(0.6).epsilon(1e-7));
     CHECK(a.slip_share > 0.05);
@@ -151,20 +158,8 @@ TEST_CASE("assembly pushover: a static state that leans on friction is not judge
     // turn as one, λ = 2b/h: the rear brick hangs on the head joint, its weight in friction of
     // about W/(λW) = 1.5 times the joint's normal force, well inside μ; at μ = 0.7 the joint
     // slips in the mechanism (λ = 0.6)
-    Scene s = test::stone_scene(0.6);
-    test::add_box(s, "L", Vec3(0.2, 0.4, 0.6), Vec3(-0.1, 0, 0.3), false);
-    test::add_box(s, "R", Vec3(0.2, 0.4, 0.6), Vec3(0.1, 0, 0.3), false);
-    test::add_box(s, "G", Vec3(2, 2, 0.5), Vec3(0, 0, -0.25), true);
-    GroundMotion g;
-    GroundComponent c;
-    c.acceleration.time = {0.0, 100.0};
-    c.acceleration.value = {0.0, 9.81};
-    g.components.push_back(c);
-    s.ground_motion = g;
-    s.run.duration = 100.0;
-    s.reference = ReferenceDef{"pushover", 0, {}};
+    Scene s = two_bricks(5.0);
     const auto& kind = cases::case_kind("pushover", "test");
-    s.contact.friction = 5.0;
     const auto stuck = cases::assembly_pushover(s);
     CHECK(stuck.lambda == Approx(0.4 / 0.6).epsilon(1e-7));
     CHECK_FALSE(stuck.friction_binds);
