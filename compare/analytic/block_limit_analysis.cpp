@@ -207,6 +207,10 @@ void check_input(const std::vector<LimitBlock>& blocks, const Vec3& gravity, con
     if (!(friction >= 0.0) || !std::isfinite(friction))
         throw Error("limit analysis: friction must be finite and ≥ 0, got " + message_number(friction));
     if (!gravity.allFinite() || !live.allFinite()) throw Error("limit analysis: gravity and live load must be finite");
+    const auto free_blocks = std::count_if(blocks.begin(), blocks.end(), [](const LimitBlock& b) { return !b.fixed; });
+    if (free_blocks > kLimitMaxFreeBlocks)
+        throw Error("limit analysis: " + std::to_string(free_blocks) + " free blocks, beyond the " +
+                    std::to_string(kLimitMaxFreeBlocks) + " it solves within minutes");
     for (size_t b = 0; b < blocks.size(); ++b)
         if (!blocks[b].fixed && !(blocks[b].mass > 0.0 && std::isfinite(blocks[b].mass)))
             throw Error("limit analysis: block " + std::to_string(b) + " has mass " + message_number(blocks[b].mass) +

@@ -36,6 +36,8 @@ struct LimitTwist {
 
 /// λ above which the live load counts as carried without limit
 constexpr double kLimitLambdaCap = 1e3;
+/// the most free blocks the analysis takes (a wall of 916 bricks took 60–100 s): more is refused
+constexpr long kLimitMaxFreeBlocks = 2000;
 
 /// what the linear programme found
 struct LimitAnalysisResult {

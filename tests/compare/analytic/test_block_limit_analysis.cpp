@@ -333,3 +333,9 @@ TEST_CASE("limit analysis: joints inset from their edges, as compliant contacts 
     CHECK(inset < rigid * 0.98);
     CHECK(inset > 0.0);
 }
+
+TEST_CASE("limit analysis: an assembly beyond the blocks it solves within minutes is refused at once", "[oracle][limit]") {
+    std::vector<LimitBlock> many{ground()};
+    for (long i = 0; i <= kLimitMaxFreeBlocks; ++i) many.push_back(box(Vec3(0.1, 0.1, 0.1), Vec3(0.2 * double(i), 0, 0.05)));
+    CHECK_THROWS_WITH(collapse_multiplier(many, kGravity, push(), 0.5), Catch::Contains("2001 free blocks, beyond the 2000"));
+}
