@@ -16,7 +16,8 @@ Vec2 SlidingHistory::at(double at) const {
     return (1.0 - w) * x[i - 1] + w * x[i];
 }
 
-SlidingHistory newmark_slide(const std::function<Vec3(double)>& drive, double g, double mu, double duration) {
+SlidingHistory newmark_slide(const std::function<Vec3(double)>& drive, double g, double mu, double duration,
+                              const Vec2& v0) {
     constexpr long kMaxSteps = 2000000;
     const double h = std::max(1e-5, duration / double(kMaxSteps));
     const long steps = std::max(1L, long(std::ceil(duration / h)));
@@ -43,6 +44,11 @@ SlidingHistory newmark_slide(const std::function<Vec3(double)>& drive, double g,
         return Vec2(f - cap * dir);
     };
     bool held = true;
+    if (v0.norm() > 0.0) {   // launched: sliding from the start
+        held = false;
+        v = v0;
+        ++out.onsets;
+    }
     for (long i = 0; i < steps; ++i) {
         const double t0 = double(i) * h, t1 = std::min(duration, t0 + h), dt = t1 - t0;
         if (held) {

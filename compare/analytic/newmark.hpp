@@ -21,13 +21,15 @@ struct SlidingHistory {
     Vec2 at(double at) const;
 };
 
-/// Integrates the rigid-plastic block from rest over [0, duration] (s): `drive(t)` is the applied
+/// Integrates the rigid-plastic block over [0, duration] (s), from rest or launched along the base
+/// at v0 (m/s, world x and y): `drive(t)` is the applied
 /// force per unit mass (m/s², world; +z up), gravity g (m/s²) acts along −z, friction μ. The base
 /// presses with n = g − f_z per unit mass (n ≤ 0: the block is free); the block holds while
 /// |f_h| ≤ μ·n, and slides against its relative velocity with μ·n otherwise, stopping where the
 /// velocity vanishes if friction can then hold it. Midpoint steps of h = max(1e-5 s, duration/2e6)
 /// (at most 2e6 steps), with the stop found within its step: error O(h²) away from the stops,
 /// O(h·v) at each.
-SlidingHistory newmark_slide(const std::function<Vec3(double)>& drive, double g, double mu, double duration);
+SlidingHistory newmark_slide(const std::function<Vec3(double)>& drive, double g, double mu, double duration,
+                              const Vec2& v0 = Vec2::Zero());
 
 }  // namespace cairn::oracle

@@ -14,12 +14,28 @@ namespace cairn::cases {
 
 namespace {
 
-void check_newmark(const Scene& scene) { require_horizontal_base(scene, "newmark"); }
+double rocking_ratio(const Scene& scene);
 
-/// the oracle's run over the scene's duration
+/// refuses what Newmark's block leaves out: a tilted base, a spin or a vertical speed at release
+void check_newmark(const Scene& scene) {
+    require_horizontal_base(scene, "newmark");
+    const BlockDef& d = scene.blocks.at(size_t(scene.reference->block));
+    if (d.angular_velocity.norm() > 0.0 || std::abs(d.velocity.z()) > 1e-9 * std::max(1.0, d.velocity.norm()))
+        throw Error(scene.source + ": reference.kind = \"newmark\": blocks." + d.name +
+                    ".velocity/angular_velocity: Newmark's block is launched along the base only (no spin, no vertical "
+                    "speed)");
+    if (d.velocity.norm() > 0.0 && scene.contact.friction > rocking_ratio(scene))
+        throw Error(scene.source + ": blocks." + d.name + ".velocity: launched with μ = " + message_number(scene.contact.friction) +
+                    " above its b/h = " + message_number(rocking_ratio(scene)) +
+                    ", the block tips over its leading edge as friction stops it, which Newmark's block does not model");
+}
+
+/// the oracle's run over the scene's duration, launched at the block's initial velocity
 oracle::SlidingHistory oracle_run(const Scene& scene) {
     check_newmark(scene);
-    return oracle::newmark_slide(reference_drive(scene), gravity(scene), scene.contact.friction, scene.run.duration);
+    const Vec3 v0 = scene.blocks.at(size_t(scene.reference->block)).velocity;
+    return oracle::newmark_slide(reference_drive(scene), gravity(scene), scene.contact.friction, scene.run.duration,
+                                 Vec2(v0.x(), v0.y()));
 }
 
 /// the largest horizontal drive per unit mass (m/s²) and its unit direction (x when there is none),

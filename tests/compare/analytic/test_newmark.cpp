@@ -101,3 +101,21 @@ TEST_CASE("newmark: any duration is integrated in at most 2e6 steps", "[oracle][
     CHECK(h.t.back() == Approx(1e7));
     CHECK(h.x.back().x() == Approx(0.5 * 0.1 * 1e14).epsilon(1e-9));
 }
+
+TEST_CASE("newmark: a block launched along the base stops after v0²/(2μg), and a push along helps it on",
+          "[oracle][newmark]") {
+    const auto none = [](double) { return Vec3::Zero(); };
+    // 2 m/s at 30° in the plane, μ = 0.5: 0.4077 m along its launch, stopped at v0/(μg) = 0.408 s
+    const Vec2 v0 = 2.0 * Vec2(std::cos(M_PI / 6), std::sin(M_PI / 6));
+    const auto h = newmark_slide(none, kG, 0.5, 1.0, v0);
+    const double stop = 4.0 / (2 * 0.5 * kG);
+    // the stop found within its step (1e-5 s): O(h·v) = 2e-5 m
+    CHECK(h.x.back().norm() == Approx(stop).margin(2e-5));
+    CHECK(h.x.back().normalized().dot(v0.normalized()) == Approx(1.0).epsilon(1e-12));
+    CHECK(h.slide_time == Approx(2.0 / (0.5 * kG)).margin(2e-5));
+    CHECK(h.onsets == 1);
+    // a constant push of 0.3 g along the launch, below μ: braked at (μ − 0.3)g, then holds
+    const auto push = [](double) { return Vec3(0.3 * kG, 0, 0); };
+    const auto p = newmark_slide(push, kG, 0.5, 2.0, Vec2(2.0, 0.0));
+    CHECK(p.x.back().x() == Approx(4.0 / (2 * 0.2 * kG)).margin(2e-5));
+}

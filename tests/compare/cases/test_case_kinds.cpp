@@ -275,6 +275,17 @@ TEST_CASE("every shipped scene passes its kind's check; a drive a kind's oracle 
     extra.force = Vec3(100, 0, 0);
     pushed.loads.push_back(extra);
     CHECK_THAT(refusal(pushed), Catch::Contains("reference.force"));
+    // Newmark's block launched: along its base it is modelled; spun, or tipping as friction stops
+    // it (μ = 1.2 above the cube's b/h = 1), it is not
+    Scene launched = shipped("earthquake/block_pulse_slide");
+    BlockDef& cube = launched.blocks.at(size_t(launched.reference->block));
+    cube.velocity = Vec3(2, 0, 0);
+    CHECK(refusal(launched).empty());
+    cube.angular_velocity = Vec3(0, 0, 1);
+    CHECK_THAT(refusal(launched), Catch::Contains("launched along the base only"));
+    cube.angular_velocity = Vec3::Zero();
+    launched.contact.friction = 1.2;
+    CHECK_THAT(refusal(launched), Catch::Contains("tips over its leading edge"));
     // a load on the arch's crown
     Scene loaded = shipped("structures/arch_thick");
     LoadDef crown;
