@@ -28,6 +28,25 @@ double incline_acceleration(double g, double theta, double mu) {
     return std::max(0.0, g * (std::sin(theta) - mu * std::cos(theta)));
 }
 
+double launched_on_incline(double g, double theta, double mu, double v0, double t) {
+    const double down = g * (std::sin(theta) - mu * std::cos(theta));   // sliding downhill, + downhill
+    const double up = g * (std::sin(theta) + mu * std::cos(theta));     // sliding uphill, + downhill
+    double s = 0.0;
+    if (v0 < 0.0) {   // climbing: braked until it stops at -v0/up
+        const double stop = -v0 / up;
+        if (t <= stop) return v0 * t + 0.5 * up * t * t;
+        s = -v0 * v0 / (2.0 * up);
+        t -= stop;
+        v0 = 0.0;
+    }
+    if (down <= 0.0) {   // friction holds it: braked to rest, then held
+        if (v0 <= 0.0) return s;
+        const double stop = v0 / -down;
+        return t <= stop ? s + v0 * t + 0.5 * down * t * t : s + v0 * v0 / (-2.0 * down);
+    }
+    return s + v0 * t + 0.5 * down * t * t;
+}
+
 double HousnerBlock::alpha() const { return std::atan(b / h); }
 double HousnerBlock::radius() const { return std::sqrt(b * b + h * h); }
 double HousnerBlock::p() const { return std::sqrt(3.0 * g / (4.0 * radius())); }

@@ -61,6 +61,10 @@ double pulled_block_acceleration(double mass, double g, double pull, double mu);
 
 /// acceleration down a plane inclined θ (rad) with friction μ; 0 if it holds, m/s²
 double incline_acceleration(double g, double theta, double mu);
+/// displacement down a plane inclined θ (rad), friction μ, at time t (s) of a block launched along
+/// its fall line at v0 (m/s, + downhill): braked at g(sin θ + μ cos θ) uphill, at g(μ cos θ − sin θ)
+/// downhill when tan θ < μ (then it stops and holds), sped up at g(sin θ − μ cos θ) otherwise, m
+double launched_on_incline(double g, double theta, double mu, double v0, double t);
 
 /// Housner's rigid rectangular block of half-width b and half-height h (m) rocking on a rigid base
 struct HousnerBlock {

@@ -45,15 +45,70 @@ metrics::Series downhill(const Scene& scene, const std::vector<Sample>& s, const
     return out;
 }
 
+/// the reference block's launch speed down the plane's fall line, m/s (+ downhill; 0 released at rest)
+double launch_speed(const Scene& scene, const Plane& p) {
+    return scene.blocks.at(size_t(scene.reference->block)).velocity.dot(p.down);
+}
+
+/// refuses a drive the incline oracle leaves out: loads, a record, a spin, a launch off the fall line
+void check_incline(const Scene& scene) {
+    require_drive_modelled(scene, "incline", {false, true});
+    const BlockDef& d = scene.blocks.at(size_t(scene.reference->block));
+    const Plane p = plane(scene);
+    if (d.angular_velocity.norm() > 0.0 || (d.velocity - d.velocity.dot(p.down) * p.down).norm() > 1e-9 * d.velocity.norm())
+        throw Error(scene.source + ": reference.kind = \"incline\": blocks." + d.name +
+                    ".velocity/angular_velocity: the incline's block is launched along the plane's fall line only (no "
+                    "spin, no speed across it or off the plane)");
+}
+
+/// the launched block's displacement down the plane at the times `t`, m
+std::vector<double> launched_curve(const Scene& scene, const Plane& p, double v0, const std::vector<double>& t) {
+    std::vector<double> out;
+    for (double x : t) out.push_back(oracle::launched_on_incline(gravity(scene), p.angle, scene.contact.friction, v0, x));
+    return out;
+}
+
 std::vector<double> incline_curve(const Scene& scene, ContactKind, const std::vector<double>& t) {
-    const double a = oracle::incline_acceleration(gravity(scene), plane(scene).angle, scene.contact.friction);
+    const Plane p = plane(scene);
+    if (const double v0 = launch_speed(scene, p); v0 != 0.0) return launched_curve(scene, p, v0, t);
+    const double a = oracle::incline_acceleration(gravity(scene), p.angle, scene.contact.friction);
     std::vector<double> out;
     if (a <= 0.0) return out;   // held: the elastic shear only, judged by its drift
     for (double x : t) out.push_back(0.5 * a * x * x);
     return out;
 }
 
-CaseAnalysis analyse_incline(const Scene& scene, const std::vector<Sample>& s, ContactKind) {
+/// a launched block: judged on its final displacement and, launched uphill, its highest point
+void judge_launch(const Scene& scene, const Plane& p, double v0, ContactKind contact, CaseAnalysis& r) {
+    using namespace metrics;
+    r.analytic = launched_curve(scene, p, v0, r.measured.t);
+    r.analytic_label = "launched at v0: braked by g(sin θ + μ cos θ) uphill, g(sin θ − μ cos θ) downhill";
+    r.analytic_key = "launched block";
+    double lowest = 0.0, largest = 0.0;   // the reference's least and largest displacement, m
+    for (double x : r.analytic) lowest = std::min(lowest, x), largest = std::max(largest, std::abs(x));
+    const int b = scene.reference->block;
+    double allowance = 0.01 * largest;
+    std::string why = "1 % of the largest displacement: the engines' contact and step";
+    if (contact.penalty && scene.contact.ks > 0.0) {   // the shear springs stretch before they slide
+        const double stretch = scene.contact.friction * block_mass(scene, b) * gravity(scene) * std::cos(p.angle) /
+                               (scene.contact.ks * contact_area(scene));
+        allowance += stretch;
+        why = "1 % of the largest displacement, plus the shear springs' stretch μ·m·g·cos θ/(ks·A) = " +
+              message_number(stretch) + " m";
+    }
+    r.metrics.push_back(absolute("final displacement down the plane", "m", r.measured.y.back(), r.analytic.back(),
+                                 allowance, why));
+    if (v0 < 0.0) {
+        double highest = 0.0;
+        for (double x : r.measured.y) highest = std::min(highest, x);
+        r.metrics.push_back(absolute("highest point (up the plane)", "m", highest, lowest, allowance,
+                                     why + "; v0²/(2g(sin θ + μ cos θ)) up the plane"));
+    }
+    const auto half = crossings(r.measured, 0.5 * r.analytic.back(), r.analytic.back() > 0.0 ? Crossing::up : Crossing::down);
+    if (!half.empty()) r.event_time = half[0], r.has_event = true;
+}
+
+CaseAnalysis analyse_incline(const Scene& scene, const std::vector<Sample>& s, ContactKind contact) {
     using namespace metrics;
     const Plane p = plane(scene);
     const int b = scene.reference->block;
@@ -62,6 +117,10 @@ CaseAnalysis analyse_incline(const Scene& scene, const std::vector<Sample>& s, C
     CaseAnalysis r;
     r.measured = downhill(scene, s, p.down);
     r.quantity = "displacement of A's centre of mass down the plane, m";
+    if (const double v0 = launch_speed(scene, p); v0 != 0.0) {
+        judge_launch(scene, p, v0, contact, r);
+        return r;
+    }
     if (acc > 0.0) {
         r.analytic = incline_curve(scene, {}, r.measured.t);
         r.analytic_label = "s = a t²/2, a = g (sin θ − μ cos θ)";
@@ -88,8 +147,7 @@ CaseAnalysis analyse_incline(const Scene& scene, const std::vector<Sample>& s, C
 // kind "incline": Coulomb's law holds for rigid contact
 static const CaseKind& incline_kind() {
     static const FunctionKind k("incline", {"angle"}, analyse_incline, incline_curve, rigid_contact_only,
-                                "slid half the reference distance",
-                                [](const Scene& s) { require_drive_modelled(s, "incline", {}); });
+                                "slid half the reference distance", check_incline);
     return k;
 }
 

@@ -100,3 +100,19 @@ TEST_CASE("Housner's angle history crosses zero at t1 and keeps the amplitude it
         CHECK(-lo == Approx(b.amplitude_after(th0, 1, r)).epsilon(2e-3));
     }
 }
+
+TEST_CASE("a block launched up a plane steeper than its friction angle climbs, stops and slides back down",
+          "[oracle]") {
+    // θ = 30°, μ = 0.4 (tan θ = 0.577 > μ), 2 m/s uphill: braked at g(sin θ + μ cos θ) = 8.3033
+    // m/s² for 0.24087 s over 0.24087 m, then down at g(sin θ − μ cos θ) = 1.5018 m/s²
+    const double g = 9.81, th = M_PI / 6, mu = 0.4;
+    const double up = g * (std::sin(th) + mu * std::cos(th)), down = g * (std::sin(th) - mu * std::cos(th));
+    const double stop = 2.0 / up, climb = 4.0 / (2 * up);
+    CHECK(launched_on_incline(g, th, mu, -2.0, stop) == Approx(-climb).epsilon(1e-12));
+    CHECK(launched_on_incline(g, th, mu, -2.0, stop + 1.0) == Approx(-climb + 0.5 * down).epsilon(1e-12));
+    // launched down a plane flatter than its friction angle: stops after v0²/(2g(μ cos θ − sin θ))
+    const double flat = 10 * M_PI / 180, brake = g * (0.6 * std::cos(flat) - std::sin(flat));
+    CHECK(launched_on_incline(g, flat, 0.6, 1.5, 10.0) == Approx(1.5 * 1.5 / (2 * brake)).epsilon(1e-12));
+    // at rest on it: held
+    CHECK(launched_on_incline(g, flat, 0.6, 0.0, 10.0) == 0.0);
+}

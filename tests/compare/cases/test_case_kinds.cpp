@@ -286,6 +286,11 @@ TEST_CASE("every shipped scene passes its kind's check; a drive a kind's oracle 
     cube.angular_velocity = Vec3::Zero();
     launched.contact.friction = 1.2;
     CHECK_THAT(refusal(launched), Catch::Contains("tips over its leading edge"));
+    // launched across the incline's fall line: friction turns the path, which the incline's block
+    // (along the fall line) does not model
+    Scene across = incline_scene();
+    across.blocks.at(size_t(across.reference->block)).velocity = Vec3(0, 1, 0);
+    CHECK_THAT(refusal(across), Catch::Contains("launched along the plane's fall line only"));
     // a load on the arch's crown
     Scene loaded = shipped("structures/arch_thick");
     LoadDef crown;
