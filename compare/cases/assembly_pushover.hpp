@@ -14,7 +14,8 @@ namespace cairn::cases {
 /// the limit analysis of a pushover scene and its mechanism
 struct AssemblyPushover {
     double lambda = 0.0;             ///< collapse multiplier: a/g at which a mechanism forms
-    double lambda_inset = 0.0;       ///< the same with every joint hinging 1 mm inside its edges
+    double lambda_inset = 0.0;       ///< the same with every joint hinging 1 mm inside its edges (0: it
+                                     ///< cannot stand so)
     double record_sign = 1.0;        ///< +1, or −1 when the record pushes against its direction
     double mass = 0.0;               ///< generalised mass of the mechanism, kg (per its amplitude q, m)
     double push = 0.0;               ///< generalised live force per unit of a/g, N
@@ -35,7 +36,7 @@ void require_pushover_drive(const Scene& scene);
 
 /// reads the scene's pushover as a limit analysis; throws cairn::Error naming the key when the
 /// scene is not one (no single horizontal record, other loads or initial speeds, no admissible
-/// state under gravity, a live load carried without limit, a mechanism in which no block turns)
+/// state under gravity, a live load carried without limit)
 AssemblyPushover assembly_pushover(const Scene& scene);
 
 /// the metrics of a run against the assembly's limit analysis (the pushover kind's analysis for a

@@ -1,5 +1,7 @@
 #include "engine_scenes.hpp"
 
+#include <catch2/catch.hpp>
+
 #include <cmath>
 
 #include "error.hpp"
@@ -80,6 +82,17 @@ std::vector<Sample> sampled_run(const std::string& engine, const Scene& scene, c
 double angle_about_y(const Quat& q) {
     Mat3 r = q.toRotationMatrix();
     return std::atan2(r(0, 2), r(2, 2));
+}
+
+int check_judged(const cases::CaseAnalysis& a) {
+    int judged = 0;
+    for (const auto& m : a.metrics) {
+        if (!m.judged()) continue;
+        ++judged;
+        INFO(m.name << ": " << m.value << " against " << m.reference << " (" << m.tolerance_text() << "; " << m.basis << ")");
+        CHECK(m.pass());
+    }
+    return judged;
 }
 
 }  // namespace cairn::test

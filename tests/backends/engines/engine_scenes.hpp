@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "backend/backend.hpp"
+#include "cases/case_analysis.hpp"
 #include "scene/scene.hpp"
 #include "scene/scene_builder.hpp"
 #include "support/scene_builder.hpp"
@@ -42,6 +43,10 @@ std::unique_ptr<Backend> build_backend(const std::string& engine, const Scene& s
 /// `every` seconds (and at the end); throws cairn::Error naming the engine if it goes unstable
 std::vector<Sample> sampled_run(const std::string& engine, const Scene& scene, const std::string& mode = "rigid",
                                 double every = 1e-3);
+
+/// checks that every judged metric of an analysis passes (each shown with its basis when one does
+/// not); returns how many were judged
+int check_judged(const cases::CaseAnalysis& a);
 
 /// rotation angle about y of a rotation that is a pure y rotation, rad
 double angle_about_y(const Quat& q);

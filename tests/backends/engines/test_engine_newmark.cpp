@@ -21,15 +21,7 @@ Scene shipped(const std::string& name, const std::vector<Override>& overrides = 
 /// the judged metrics of the newmark analysis of `scene` on `engine` (`count` of them), each checked
 void judge(const std::string& engine, const Scene& scene, int count) {
     const bool dem = engine == "dem";
-    const auto a = cases::analyse_case(scene, sampled_run(engine, scene), {dem, dem});
-    int judged = 0;
-    for (const auto& m : a.metrics) {
-        if (!m.judged()) continue;
-        ++judged;
-        INFO(m.name << ": " << m.value << " against " << m.reference << " (" << m.tolerance_text() << "; " << m.basis << ")");
-        CHECK(m.pass());
-    }
-    CHECK(judged == count);
+    CHECK(check_judged(cases::analyse_case(scene, sampled_run(engine, scene), {dem, dem})) == count);
 }
 
 /// dem's final slide less Newmark's, m

@@ -50,12 +50,12 @@ std::vector<Sample> run(const Scene& s, double dt, const std::function<double(do
     return out;
 }
 
-/// two bricks 0.2 long × 0.4 deep × 0.6 tall side by side along x on a slab, friction μ, under a
-/// ramp of 0.01 g/s along x for 100 s
-Scene two_bricks(double mu) {
+/// two bricks of `size` (m) end to end along x on a slab, friction μ, under a ramp of 0.01 g/s
+/// along x for 100 s
+Scene two_bricks(double mu, const Vec3& size = Vec3(0.2, 0.4, 0.6)) {
     Scene s = test::stone_scene(mu);
-    test::add_box(s, "L", Vec3(0.2, 0.4, 0.6), Vec3(-0.1, 0, 0.3), false);
-    test::add_box(s, "R", Vec3(0.2, 0.4, 0.6), Vec3(0.1, 0, 0.3), false);
+    test::add_box(s, "L", size, Vec3(-0.5 * size.x(), 0, 0.5 * size.z()), false);
+    test::add_box(s, "R", size, Vec3(0.5 * size.x(), 0, 0.5 * size.z()), false);
     test::add_box(s, "G", Vec3(2, 2, 0.5), Vec3(0, 0, -0.25), true);
     GroundMotion g;
     GroundComponent c;
@@ -174,4 +174,18 @@ TEST_CASE("assembly pushover: a static state that leans on friction is not judge
     // the column pushed at 30°: pure rocking, friction idle (0.8 far above the 0.31 it needs)
     const double cs = std::cos(kPi / 6), sn = std::sin(kPi / 6);
     CHECK_FALSE(cases::assembly_pushover(column(Vec3(cs, sn, 0), 2.5e-3, 160.0)).friction_binds);
+}
+
+TEST_CASE("assembly pushover: a course that slides before it tips is shown, not judged, whichever of the LP's equal "
+          "mechanisms comes out",
+          "[compare][pushover]") {
+    // two bricks 0.4 long × 0.2 deep × 0.2 tall end to end along x, μ = 0.8: the pair slides at
+    // λ = μ (sliding one brick or both, or twisting while it slides, all give 0.8), long before
+    // either tips (b/h = 2)
+    const Scene s = two_bricks(0.8, Vec3(0.4, 0.2, 0.2));
+    const auto a = cases::assembly_pushover(s);
+    CHECK(a.lambda == Approx(0.8).epsilon(1e-7));
+    CHECK(a.slip_share > 0.05);
+    for (const auto& m : cases::case_kind("pushover", "test").analyse(s, run(s, 0.1, [](double) { return 0.0; }), {false}).metrics)
+        CHECK(m.check == metrics::Check::info);
 }
