@@ -11,6 +11,7 @@
 #include "analytic/block_interfaces.hpp"
 #include "analytic/block_limit_analysis.hpp"
 #include "cases/case_util.hpp"
+#include "cases/structure_kinds.hpp"
 #include "error.hpp"
 #include "geometry/hexahedron.hpp"
 #include "output/number_format.hpp"
@@ -25,12 +26,6 @@ constexpr double kInset = 1e-3;       // m: how far inside an edge a rigid engin
                                       // margin rounds every box edge by 1 mm; ODE's and MuJoCo's contacts are soft)
 
 std::string head(const Scene& scene) { return scene.source + ": reference.kind = \"pushover\": "; }
-
-/// the record's a/g at scene time t, signed along its direction
-double record_multiplier(const Scene& scene, double t) {
-    const auto& gm = *scene.ground_motion;
-    return gm.components.front().acceleration.at(t - gm.start) / gravity(scene);
-}
 
 /// the sign of the record's largest excursion: a ramp written negative pushes against `direction`
 double record_sign(const Scene& scene) {
@@ -140,8 +135,8 @@ AssemblyPushover analyse_limits(const Scene& scene) {
     for (size_t i = 0; i < blocks.size(); ++i) {
         if (blocks[i].fixed) continue;
         const auto& w = la.mechanism[i];
-        const double density = blocks[i].mass / mass_properties(blocks[i].corners, 1.0).volume;
-        const Mat3 inertia = mass_properties(blocks[i].corners, density).inertia;
+        const MassProperties unit = mass_properties(blocks[i].corners, 1.0);   // density 1: scale by the mass
+        const Mat3 inertia = unit.inertia * (blocks[i].mass / unit.volume);
         size = std::max(size, shortest_edge(blocks[i].corners));
         r.mass += blocks[i].mass * w.velocity.squaredNorm() + w.angular.dot(inertia * w.angular);
         r.push += blocks[i].mass * live.dot(w.velocity);
@@ -175,7 +170,7 @@ double AssemblyPushover::lagged_multiplier(const Scene& scene, double rotation) 
     const double dt = std::max(1e-4, scene.run.duration * 1e-7);
     double q = 0.0, v = 0.0;
     for (double t = 0.0; t <= scene.run.duration; t += dt) {
-        const double lambda = record_sign * record_multiplier(scene, t);
+        const double lambda = record_sign * ground_multiplier(scene, t);
         const double acc = push * (lambda - this->lambda) / mass;
         if (q <= 0.0 && v <= 0.0 && acc <= 0.0) continue;   // held by its joints
         v += acc * dt;
@@ -217,11 +212,11 @@ CaseAnalysis analyse_assembly_pushover(const Scene& scene, const std::vector<Sam
                            : "";
 
     auto up = crossings(r.measured, threshold, Crossing::up);
-    const double measured = up.empty() ? NAN : record_multiplier(scene, up.front()) * a.record_sign;
+    const double measured = up.empty() ? NAN : ground_multiplier(scene, up.front()) * a.record_sign;
     if (!up.empty()) r.event_time = up.front(), r.has_event = true;
     double peak = 0.0, largest = 0.0;   // the record's largest a/g along its push; the largest rotation
     for (size_t i = 0; i < r.measured.t.size(); ++i)
-        peak = std::max(peak, a.record_sign * record_multiplier(scene, r.measured.t[i])), largest = std::max(largest, r.measured.y[i]);
+        peak = std::max(peak, a.record_sign * ground_multiplier(scene, r.measured.t[i])), largest = std::max(largest, r.measured.y[i]);
     if (peak < 0.98 * a.lambda) {
         // the record stays below λ: a statically admissible state carries it, nothing turns that far
         const std::string basis = la + " above the record's largest a/g " + fixed_text(peak, 4) +
