@@ -237,29 +237,40 @@ double BlockStack::winkler_multiplier(double kn) const { return stack_peak(*this
 
 double BlockStack::winkler_peak_rotation(double kn) const { return stack_peak(*this, kn).top_rotation; }
 
-double BlockStack::rigid_ramp_time(const std::function<double(double)>& lambda, double rotation, double until) const {
-    // the monolith: mass m, centre (b, h) from the leading base edge, inertia i about that edge;
-    // θ̈ = (m g/i)[λ(t)(h cos θ − b sin θ) − (b cos θ − h sin θ)], held at θ = 0 while that is < 0
-    double m = 0.0, mz = 0.0, z = 0.0;
+namespace {
+
+/// the stack as one rigid body rocking about its base joint's leading edge: mass (kg), the height
+/// of its centre of mass (m), its half-width b (m, the centre's distance from the edge along the
+/// push) and its inertia about that edge (kg·m²)
+struct Monolith {
+    double m = 0.0, h = 0.0, b = 0.0, i = 0.0;
+};
+
+Monolith monolith_of(const std::vector<StackLayer>& layers) {
+    Monolith r;
+    double mz = 0.0, z = 0.0;
     for (const auto& l : layers) {
-        m += l.mass;
+        r.m += l.mass;
         mz += l.mass * (z + 0.5 * l.height);
         z += l.height;
     }
-    const double h = mz / m, b = 0.5 * layers[0].width;
-    double i = 0.0;
+    r.h = mz / r.m, r.b = 0.5 * layers[0].width;
     z = 0.0;
     for (const auto& l : layers) {   // own inertia + m·distance² to the edge
         const double zc = z + 0.5 * l.height;
-        i += l.mass * (l.width * l.width + l.height * l.height) / 12.0 + l.mass * (b * b + zc * zc);
+        r.i += l.mass * (l.width * l.width + l.height * l.height) / 12.0 + l.mass * (r.b * r.b + zc * zc);
         z += l.height;
     }
-    auto acc = [&](double t, double a) {
-        const double torque = m * g * (lambda(t) * (h * std::cos(a) - b * std::sin(a)) - (b * std::cos(a) - h * std::sin(a)));
-        return (a <= 0.0 && torque <= 0.0) ? 0.0 : torque / i;
-    };
+    return r;
+}
+
+/// RK4 at 1e-4 s of θ̈ = acc(t, θ) from (θ0, 0) at t = 0: the time (s) at which θ reaches
+/// `rotation`, NaN if not within `until`; `rests` holds θ at 0 while acc ≤ 0 there (a rigid
+/// block on its base)
+double time_to_rotation(const std::function<double(double, double)>& acc, double theta0, bool rests, double rotation,
+                        double until) {
     const double dt = 1e-4;
-    double t = 0.0, th = 0.0, w = 0.0;
+    double t = 0.0, th = theta0, w = 0.0;
     while (t < until) {
         const double k1a = w, k1w = acc(t, th);
         const double k2a = w + 0.5 * dt * k1w, k2w = acc(t + 0.5 * dt, th + 0.5 * dt * k1a);
@@ -267,12 +278,62 @@ double BlockStack::rigid_ramp_time(const std::function<double(double)>& lambda, 
         const double k4a = w + dt * k3w, k4w = acc(t + dt, th + dt * k3a);
         const double th_new = th + dt / 6.0 * (k1a + 2 * k2a + 2 * k3a + k4a);
         w += dt / 6.0 * (k1w + 2 * k2w + 2 * k3w + k4w);
-        if (th_new <= 0.0) th = 0.0, w = std::max(0.0, w);   // resting on the base
+        if (rests && th_new <= 0.0) th = 0.0, w = std::max(0.0, w);   // resting on the base
         else th = th_new;
         t += dt;
+        if (!std::isfinite(th)) return NAN;
         if (th >= rotation) return t;
     }
     return NAN;
+}
+
+}  // namespace
+
+double BlockStack::rigid_ramp_time(const std::function<double(double)>& lambda, double rotation, double until) const {
+    // θ̈ = (m g/i)[λ(t)(h cos θ − b sin θ) − (b cos θ − h sin θ)], held at θ = 0 while that is < 0
+    const Monolith s = monolith_of(layers);
+    auto acc = [&](double t, double a) {
+        const double torque =
+            s.m * g * (lambda(t) * (s.h * std::cos(a) - s.b * std::sin(a)) - (s.b * std::cos(a) - s.h * std::sin(a)));
+        return (a <= 0.0 && torque <= 0.0) ? 0.0 : torque / s.i;
+    };
+    return time_to_rotation(acc, 0.0, true, rotation, until);
+}
+
+double BlockStack::winkler_ramp_time(double kn, const std::function<double(double)>& lambda, double rotation,
+                                     double until) const {
+    const std::vector<PathPoint> path = stack_path(*this, kn);
+    if (path.size() < 2 || !(path.back().top_rotation > rotation)) return NAN;
+    for (size_t k = 1; k < path.size(); ++k)
+        if (!(path[k].top_rotation > path[k - 1].top_rotation)) return NAN;   // not one coordinate
+    // λ_w(θ): the path's multiplier at top rotation θ, linear between its points, odd in θ
+    // (from 0 to the first point the joints are closed: linear)
+    auto static_multiplier = [&](double th) {
+        const double a = std::abs(th), sign = th < 0 ? -1.0 : 1.0;
+        if (a <= path.front().top_rotation) return sign * path.front().lambda * a / path.front().top_rotation;
+        const auto hi = std::lower_bound(path.begin(), path.end(), a,
+                                         [](const PathPoint& p, double v) { return p.top_rotation < v; });
+        const auto lo = hi - 1;
+        const double f = (a - lo->top_rotation) / (hi->top_rotation - lo->top_rotation);
+        return sign * (lo->lambda + f * (hi->lambda - lo->lambda));
+    };
+    // the rigid monolith's equation, θ̈ = (m g/i)(h cos θ − b sin θ)(λ(t) − λ_s(θ)), with the
+    // Winkler stack's quasi-static multiplier λ_w in place of the rigid λ_s; from its static state
+    // under λ(0) on the rising branch
+    const Monolith s = monolith_of(layers);
+    const PathPoint peak = path_peak(path);
+    const double lambda0 = lambda(0.0);
+    if (std::isnan(peak.lambda) || std::abs(lambda0) >= peak.lambda) return NAN;
+    double lo = 0.0, hi = peak.top_rotation;
+    for (int k = 0; k < 200; ++k) {
+        const double mid = 0.5 * (lo + hi);
+        (static_multiplier(mid) < std::abs(lambda0) ? lo : hi) = mid;
+    }
+    const double theta0 = lambda0 < 0 ? -lo : lo;
+    auto acc = [&](double t, double a) {
+        return s.m * g / s.i * (s.h * std::cos(a) - s.b * std::sin(a)) * (lambda(t) - static_multiplier(a));
+    };
+    return time_to_rotation(acc, theta0, false, rotation, until);
 }
 
 }  // namespace cairn::oracle

@@ -219,17 +219,32 @@ CaseAnalysis analyse_pushover(const Scene& scene, const std::vector<Sample>& s, 
     if (!stack_along_a_side(scene)) return analyse_assembly_pushover(scene, s, contact, threshold);
     const oracle::BlockStack stack = scene_stack(scene);
     const double quasi_static = stack.rigid_multiplier();
-    const double t_ref = stack.rigid_ramp_time([&](double t) { return ground_multiplier(scene, t); }, threshold,
-                                               scene.run.duration);
-    const double lambda_ref = std::isnan(t_ref) ? NAN : ground_multiplier(scene, t_ref);
+    auto ramp = [&](double t) { return ground_multiplier(scene, t); };
+    const double t_rigid = stack.rigid_ramp_time(ramp, threshold, scene.run.duration);
+    const double lambda_rigid = std::isnan(t_rigid) ? NAN : ground_multiplier(scene, t_rigid);
+    // dem's overlap contact integrates kn over each bed joint: a Winkler joint, whose stack leans
+    // and peaks below B/H (as ground_rocking judges dem on its Winkler base); the paper's grid puts
+    // the weight on its edge row and an engine's matched contact matches only kn·A of a face, so
+    // those are judged, as rigid contact is, against the rigid monolith
+    const bool winkler = contact.penalty && contact.point_springs && scene.contact.scheme == ContactScheme::overlap;
+    const double t_winkler = winkler ? stack.winkler_ramp_time(scene.contact.kn, ramp, threshold, scene.run.duration) : NAN;
+    const double lambda_winkler = std::isnan(t_winkler) ? NAN : ground_multiplier(scene, t_winkler);
+    const double peak = contact.penalty ? stack.winkler_multiplier(scene.contact.kn) : NAN;
 
     CaseAnalysis r;
     r.measured = rotation_series(s, free_index(scene, scene.reference->block));
     r.quantity = "rotation of " + scene.blocks[scene.reference->block].name + ", rad";
     const std::string name = "a/g when the top turns " + fixed4(threshold) + " rad";
-    const std::string basis = "rigid monolith about its base edge under the scene's ramp (RK4): B/H = " +
-                              fixed4(quasi_static) + " plus the ramp's lag " + fixed4(lambda_ref - quasi_static) +
-                              "; 2 %";
+    const std::string rigid_basis = "rigid monolith about its base edge under the scene's ramp (RK4): B/H = " +
+                                    fixed4(quasi_static) + " plus the ramp's lag " +
+                                    fixed4(lambda_rigid - quasi_static);
+    const std::string winkler_basis =
+        "the stack on no-tension Winkler bed joints of modulus kn (dem's overlap contact): the monolith's rocking "
+        "equation with the joints' quasi-static multiplier in place of the rigid one, under the scene's ramp (RK4): "
+        "its peak " + fixed4(peak) + " plus the ramp's lag " + fixed4(lambda_winkler - peak) +
+        "; 2 % (the path's mechanism taken as one degree of freedom; shear springs and block strains left out)";
+    const double lambda_ref = winkler ? lambda_winkler : lambda_rigid;
+    const std::string basis = winkler ? winkler_basis : rigid_basis + "; 2 %";
     auto up = crossings(r.measured, threshold, Crossing::up);
     if (up.empty()) {
         r.metrics.push_back(missing(name, "", lambda_ref, 0.02, Check::relative, basis + " (never turned that far)"));
@@ -238,11 +253,18 @@ CaseAnalysis analyse_pushover(const Scene& scene, const std::vector<Sample>& s, 
     r.event_time = up.front();
     r.has_event = true;
     const double lambda = ground_multiplier(scene, up.front());
-    r.metrics.push_back(relative(name, "", lambda, lambda_ref, 0.02, basis));
+    if (winkler && std::isnan(lambda_ref))
+        r.metrics.push_back(info(name, "", lambda, lambda_rigid,
+                                 "not judged: the Winkler stack's path found no peak before the threshold (kn "
+                                 "beyond its continuation's round-off); against the " + rigid_basis));
+    else
+        r.metrics.push_back(relative(name, "", lambda, lambda_ref, 0.02, basis));
+    if (winkler && !std::isnan(lambda_ref))
+        r.metrics.push_back(info("a/g against the rigid monolith", "", lambda, lambda_rigid, rigid_basis));
     r.metrics.push_back(info("a/g against the quasi-static multiplier", "", lambda, quasi_static,
                              "least over the mechanisms 'all above a bed joint turn about its edge': B/H"));
     if (contact.penalty)
-        r.metrics.push_back(info("quasi-static peak of penalty joints", "", lambda, stack.winkler_multiplier(scene.contact.kn),
+        r.metrics.push_back(info("quasi-static peak of penalty joints", "", lambda, peak,
                                  "bed joints as no-tension springs kn integrated over the joint: they open gradually, "
                                  "so the stack leans and peaks below B/H (compare/analytic)"));
     return r;
