@@ -1,15 +1,21 @@
 // case (e): a block released tilted on one base edge rocks (Housner 1963), judged against the
 // reference that models each variant's contact: Housner's rigid impact for rigid contact, the
 // spring block (oracle::SpringBlock: the same point springs, integrated independently) for the
-// hitting-point springs of dem; an engine's matched contact has no reference after the first impact
+// hitting-point springs of dem's paper scheme, the rigid block on a Winkler base
+// (oracle::WinklerRocking) for dem's overlap contact; an engine's matched contact has no reference
+// after the first impact
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <string>
+#include <vector>
 
 #include "analytic/oracles.hpp"
 #include "analytic/spring_block.hpp"
 #include "cases/case_util.hpp"
 #include "cases/case_kind.hpp"
+#include "cases/winkler_model.hpp"
+#include "metrics/signal.hpp"
 
 namespace cairn::cases {
 
@@ -39,18 +45,42 @@ oracle::SpringBlock spring_block(const Scene& scene, ContactKind contact) {
 }
 
 /// which reference models the variant after its first impact
-enum class Model { housner, springs, none };
+enum class Model { housner, springs, winkler, none };
 
 Model model_for(const Scene& scene, ContactKind contact) {
     if (!contact.penalty) return Model::housner;
+    if (!contact.point_springs) return Model::none;
+    // the overlap scheme integrates kn over the face: the Winkler base (which says when it cannot)
+    if (scene.contact.scheme == ContactScheme::overlap)
+        return winkler_unmodelled(scene, contact, rocking_axis(scene)).empty() ? Model::winkler : Model::none;
     // the spring block carries the ratio rule's dashpots; a damping time γ it does not model
-    if (contact.point_springs && scene.contact.damping_rule != ContactDampingRule::time) return Model::springs;
+    if (scene.contact.damping_rule != ContactDampingRule::time) return Model::springs;
     return Model::none;
 }
 
-const char* no_model_reason =
-    "no reference models it: the engine's matched contact reproduces kn·A of a face (static "
-    "penetration, frequency), not the springs along the hitting edge nor their loss at an impact";
+/// the Winkler base's rocking from the scene's release, sampled every millisecond, to `until` (s)
+oracle::WinklerTrace winkler_trace(const Scene& scene, ContactKind contact, double until) {
+    return winkler_model(scene, contact, rocking_axis(scene))
+        .rock(scene.reference->values.at("theta0"), until + 1e-9, 1e-3);
+}
+
+/// θ of the Winkler trace at the given ascending times (rad)
+std::vector<double> winkler_angles(const oracle::WinklerTrace& tr, const std::vector<double>& t) {
+    const metrics::Series theta{tr.t, tr.theta};
+    std::vector<double> out;
+    out.reserve(t.size());
+    for (double x : t) out.push_back(metrics::interpolate(theta, x));
+    return out;
+}
+
+/// why a variant of Model::none has no reference after its first impact
+std::string unmodelled_reason(const Scene& scene, ContactKind contact) {
+    if (contact.point_springs && scene.contact.scheme == ContactScheme::overlap)
+        return "no reference models it: " + winkler_unmodelled(scene, contact, rocking_axis(scene));
+    if (contact.point_springs) return "no reference models it: the spring block carries dashpots by damping ratio, not by damping time";
+    return "no reference models it: the engine's matched contact reproduces kn·A of a face (static "
+           "penetration, frequency), not the springs along the hitting edge nor their loss at an impact";
+}
 
 /// largest |θ| between times a and b
 double amplitude(const metrics::Series& th, double a, double b) {
@@ -64,6 +94,8 @@ std::vector<double> rocking_curve(const Scene& scene, ContactKind contact, const
     const auto hb = housner_block(scene);
     const double th0 = scene.reference->values.at("theta0");
     if (model_for(scene, contact) == Model::springs) return spring_block(scene, contact).angles(th0, t);
+    if (model_for(scene, contact) == Model::winkler)
+        return t.empty() ? std::vector<double>{} : winkler_angles(winkler_trace(scene, contact, t.back()), t);
     // rigid contact; for a matched engine the curve is Housner's as a guide only
     return hb.angles(th0, hb.velocity_ratio(), t);
 }
@@ -73,6 +105,7 @@ CaseAnalysis analyse_rocking(const Scene& scene, const std::vector<Sample>& s, C
     const auto hb = housner_block(scene);
     const double th0 = scene.reference->values.at("theta0"), a = hb.alpha();
     const Model model = model_for(scene, contact);
+    const std::string no_model_reason = model == Model::none ? unmodelled_reason(scene, contact) : "";
     CaseAnalysis out;
     Series th = angle_series(s, free_index(scene, scene.reference->block), rocking_axis(scene));
     out.quantity = "rocking angle θ of A, rad";
@@ -90,6 +123,14 @@ CaseAnalysis analyse_rocking(const Scene& scene, const std::vector<Sample>& s, C
                              std::to_string(scene.contact.damping_rule == ContactDampingRule::ratio ? scene.contact.damping : 0.0) +
                              "), integrated independently";
         out.analytic_key = "spring block";
+    } else if (model == Model::winkler) {
+        const auto tr = winkler_trace(scene, contact, duration);
+        ref_impacts = tr.crossings;
+        ref_amps = tr.amplitudes;
+        out.analytic = winkler_angles(tr, th.t);
+        out.analytic_label = "rigid block on a no-tension Winkler base of modulus kn (dem's overlap contact: shear "
+                             "springs and dashpots as dem's, per sub-contact), integrated independently";
+        out.analytic_key = "Winkler base";
     } else {
         // Housner's swings that end within the run: impact k+1 comes 2·t1(θk) after impact k
         ref_impacts = {hb.first_impact(th0)};
@@ -116,6 +157,9 @@ CaseAnalysis analyse_rocking(const Scene& scene, const std::vector<Sample>& s, C
     std::string t1_basis = "Housner exact t1; " + why;
     if (model == Model::springs && !ref_impacts.empty())
         t1_basis += "; spring block " + std::to_string(ref_impacts[0]) + " s";
+    if (model == Model::winkler && !ref_impacts.empty())
+        t1_basis += "; the Winkler base of the same kn " + std::to_string(ref_impacts[0]) +
+                    " s (its delay falls as kn^(-1/2))";
     auto cross = crossings(th, 0.0, Crossing::any);
     if (cross.empty()) {
         out.metrics.push_back(missing("first impact", "s", t1, tol, Check::relative, "A never came back upright"));
@@ -145,9 +189,10 @@ CaseAnalysis analyse_rocking(const Scene& scene, const std::vector<Sample>& s, C
             if (k < amps.size()) out.metrics.push_back(not_comparable(names[k], "rad", amps[k], NAN, no_model_reason));
             continue;
         }
-        const std::string basis = model == Model::housner
-            ? "Housner's impact law; 2 %: dt 1e-4 s gives < 2 % amplitude error"
-            : "spring block (same springs, same law, dt ≤ T/1000); 2 %";
+        const std::string basis = model == Model::housner ? "Housner's impact law; 2 %: dt 1e-4 s gives < 2 % amplitude error"
+                                  : model == Model::winkler
+                                      ? "Winkler base (dem's overlap contact, the same law per sub-contact); 2 %"
+                                      : "spring block (same springs, same law, dt ≤ T/1000); 2 %";
         if (!std::isfinite(ref)) {
             if (k < amps.size()) out.metrics.push_back(info(names[k], "rad", amps[k], NAN, "the reference stops rocking before this swing"));
             continue;

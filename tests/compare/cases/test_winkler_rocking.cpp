@@ -107,3 +107,32 @@ TEST_CASE("winkler_rocking: the paper's grid and the reference engines are not j
     const auto c = cases::analyse_case(s, swing(s, 0.7616, 0.3, 0.5, 1.6), fine);
     CHECK(find(c, "first impact")->check == metrics::Check::not_comparable);
 }
+
+TEST_CASE("housner: dem's overlap contact is judged after its impacts against the Winkler base, the paper grid "
+          "against the spring block", "[cases][housner]") {
+    // the shipped Housner case on the overlap contact: the rebound is the Winkler base's (the exact
+    // integral of kn·d), not the point springs' of the paper's grid, whose loss at an impact differs
+    Scene s = winkler_scene(3e9);
+    s.reference->kind = "housner";
+    s.run.duration = 1.6;
+    oracle::WinklerRocking w{0.7, 1.0, 0.2, 2600.0 * 0.14, 9.81, 3e9, 3e9, 0.8};
+    w.cells_across = w.cells_up = 4;
+    const auto tr = w.rock(s.reference->values.at("theta0"), 1.6, 1e-3);
+    REQUIRE(!tr.amplitudes.empty());
+    const auto run = swing(s, tr.crossings[0], tr.amplitudes[0], 0.5, 1.6);
+    const cases::ContactKind rigid_block;
+    const auto overlap = cases::analyse_case(s, run, rigid_block);
+    const auto* rebound = find(overlap, "amplitude after 1st impact");
+    REQUIRE(rebound);
+    INFO(rebound->basis);
+    CHECK(rebound->reference == Approx(tr.amplitudes[0]).epsilon(1e-9));
+    CHECK(rebound->pass());
+    CHECK(rebound->basis.find("Winkler") != std::string::npos);
+    // the same run read as the paper scheme's: the spring block's rebound, another number
+    s.contact.scheme = ContactScheme::paper;
+    const auto paper = cases::analyse_case(s, run, rigid_block);
+    const auto* grid = find(paper, "amplitude after 1st impact");
+    REQUIRE(grid);
+    CHECK(grid->basis.find("spring block") != std::string::npos);
+    CHECK(std::abs(grid->reference - tr.amplitudes[0]) > 0.02 * tr.amplitudes[0]);
+}
