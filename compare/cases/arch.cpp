@@ -21,7 +21,7 @@ bool limit_analysis_stands(const Scene& scene) {
 
 }  // namespace
 
-CaseAnalysis analyse_arch(const Scene& scene, const std::vector<Sample>& s, ContactKind) {
+CaseAnalysis analyse_arch(const Scene& scene, const std::vector<Sample>& s, ContactKind contact) {
     using namespace metrics;
     const auto& v = scene.reference->values;
     if (!v.count("thickness")) throw Error(scene.source + ": an arch reference needs the value thickness (m)");
@@ -70,8 +70,15 @@ CaseAnalysis analyse_arch(const Scene& scene, const std::vector<Sample>& s, Cont
         pmin = std::min(pmin, x.energy.potential), pmax = std::max(pmax, x.energy.potential);
         err = std::max(err, std::abs(x.energy.total() - total0));
     }
-    r.metrics.push_back(at_most("energy balance error / motion energy", "", err / std::max(1e-12, motion + pmax - pmin), 0.0,
-                                1e-3, "0.1 % of the energy of the motion"));
+    // judged where the backend books every loss (dem); a rigid engine's contact dissipates what
+    // it does not book (its balance error is then what the settling lost: shown)
+    const double closure = err / std::max(1e-12, motion + pmax - pmin);
+    if (contact.penalty && contact.point_springs)
+        r.metrics.push_back(at_most("energy balance error / motion energy", "", closure, 0.0, 1e-3,
+                                    "0.1 % of the energy of the motion"));
+    else
+        r.metrics.push_back(info("energy balance error / motion energy", "", closure, 0.0,
+                                 "not judged: this engine does not book what its contact dissipates"));
     return r;
 }
 
