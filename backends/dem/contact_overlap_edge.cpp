@@ -24,7 +24,8 @@ EdgeForce edge_force(const ClipPolygon& poly, int i, const Vec3& c, const Vec3& 
     const Vec3 grad = g.a - a_n * n - a_n * slope;
     const double gn = grad.norm();
     if (!(gn > 1e-9 * g.a.norm())) return e;   // g = 0 parallel to the hitting face: no trace to move
-    e.force = (-0.5 * kn * e.d2 / gn) * g.a;
+    e.offset_gradient = 0.5 * kn * e.d2 / gn;
+    e.force = -e.offset_gradient * g.a;
     return e;
 }
 

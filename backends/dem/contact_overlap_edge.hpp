@@ -18,6 +18,7 @@ struct EdgeForce {
     Vec3 force = Vec3::Zero();   ///< on the hitting face (the target takes −force), N
     Vec3 point = Vec3::Zero();   ///< where it acts: ∫p·d² ds / ∫d² ds over the edge's hitting points p, m
     double d2 = 0.0;             ///< ∫d² ds along the edge's projection on the target plane, m³
+    double offset_gradient = 0.0;///< dU/db: U's change per unit of the constraint's offset b, N
 };
 /// the edge force of edge i of `poly` (target plane through c, unit normal n; penalty kn, N/m³;
 /// `slope` the polygon's OverlapIntegrals::slope)

@@ -14,7 +14,8 @@ namespace cairn::dem {
 // paper's quarter-edge tolerance stays: a point near the edge came through s, and without it a
 // strip of width d along the edge would drop in and out as d changes
 int side_constraints(const PairGeometry& g, int s, const Vec3& hit_normal, bool loose,
-                     std::array<Affine, kMaxSideConstraints>& out) {
+                     std::array<Affine, kMaxSideConstraints>& out, const Quad* hit_face,
+                     std::array<ReachCap, kMaxSideConstraints>* caps) {
     int k = 0;
     const Vec3& ns = g.normal[s];
     const double cs = ns.dot(g.centre[s]);
@@ -24,7 +25,23 @@ int side_constraints(const PairGeometry& g, int s, const Vec3& hit_normal, bool 
         const double co = no.dot(g.centre[o]);
         out[k++] = Affine{-no, co + g.flush_tol};
         const bool facing = !loose && hit_normal.dot(no) < -1e-3;
-        out[k++] = Affine{ns - no, co - cs + (facing ? 0.0 : g.closer_tol)};
+        double tol = facing ? 0.0 : g.closer_tol;
+        if (caps) (*caps)[size_t(k)] = ReachCap{};
+        if (!facing && hit_face) {
+            // no deeper than the hitting face reaches behind o: a face that only dips behind o's
+            // plane (a brick hanging over the edge of its base, its bottom sunk a millimetre into
+            // the base's top) entered through o, and the sliver of its side that lies behind o
+            // must not be measured from s, a tenth of a metre away
+            double reach = 0.0;
+            int deepest = -1;
+            for (int i = 0; i < 4; ++i)
+                if (co - no.dot((*hit_face)[size_t(i)]) > reach) reach = co - no.dot((*hit_face)[size_t(i)]), deepest = i;
+            if (reach < tol) {
+                tol = reach;
+                if (caps) (*caps)[size_t(k)] = ReachCap{deepest, no};
+            }
+        }
+        out[k++] = Affine{ns - no, co - cs + tol};
     }
     return k;
 }

@@ -22,9 +22,19 @@ constexpr int kMaxSideConstraints = 16;
 /// overlap scheme): behind every other side plane (flush within flush_tol) and not entering
 /// through another side. `hit_normal` is the hitting side's outward unit normal; `loose` gives
 /// every entering constraint the closer tolerance whatever the hitting normal (the refresh's
-/// bound over any orientation the blocks reach). Returns the count written to `out`.
+/// bound over any orientation the blocks reach). With `hit_face`, the closer tolerance of a side o
+/// the hitting side does not face is at most how far the face's corners reach behind o's plane.
+/// Returns the count written to `out`.
+/// A closer constraint whose tolerance is the hitting face's reach behind side o: its offset moves
+/// with the face's corner `corner` (index into the face's quad) along o's outward normal `normal`.
+struct ReachCap {
+    int corner = -1;              ///< -1: the constraint does not move with the hitting face
+    Vec3 normal = Vec3::Zero();   ///< o's outward unit normal
+};
+
 int side_constraints(const PairGeometry& g, int s, const Vec3& hit_normal, bool loose,
-                     std::array<Affine, kMaxSideConstraints>& out);
+                     std::array<Affine, kMaxSideConstraints>& out, const Quad* hit_face = nullptr,
+                     std::array<ReachCap, kMaxSideConstraints>* caps = nullptr);
 
 /// true when hitting face f of block h may act on block t at some step before the next refresh,
 /// while no point of either block moves more than half of `margin` (m) nor turns more than

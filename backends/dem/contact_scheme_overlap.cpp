@@ -57,6 +57,7 @@ void ContactSet::evaluate_overlap(std::vector<Block>& blocks, double dt, long be
     const int n = std::clamp(law_.subdivision, 1, kMaxSubdivision);
     std::array<Vec3, (kMaxSubdivision + 1) * (kMaxSubdivision + 1)> grid;   // sub-cell corners
     std::array<Affine, kMaxConstraints> cons;
+    std::array<ReachCap, kMaxSideConstraints> caps;
     for (long ci = begin; ci < end; ++ci) {
         Candidate& c = candidates_[size_t(ci)];
         ContactTotals& tot = c.totals;
@@ -86,7 +87,7 @@ void ContactSet::evaluate_overlap(std::vector<Block>& blocks, double dt, long be
                     }
                     return false;
                 };
-                const int side_count = side_constraints(g, s, frames_[size_t(c.hit_block)].normal[size_t(hit_side)], false, cons);
+                const int side_count = side_constraints(g, s, frames_[size_t(c.hit_block)].normal[size_t(hit_side)], false, cons, &hq, &caps);
                 if (missed_by(cons.data(), cons.data() + side_count)) continue;
                 if (!ready) {
                     ready = true;
@@ -357,6 +358,17 @@ void ContactSet::evaluate_overlap(std::vector<Block>& blocks, double dt, long be
                                 const SubForce edge{eh, et, e.force, nt, eh, et};
                                 if (keep_forces) c.sub_forces.push_back(edge);
                                 else edge.spread(hb, tb);
+                                // a closer constraint capped at the face's reach behind o moves
+                                // with the face's deepest corner p along −n_o: U's gradient there
+                                // is dU/db·(−n_o), a pair at p (the reach is o's plane to p,
+                                // unchanged by a motion of both blocks)
+                                if (k < side_count && caps[size_t(k)].corner >= 0) {
+                                    const Vec3& p = hq[size_t(caps[size_t(k)].corner)];
+                                    const NodeWeights ch = node_weights(hb, c.hit_face, p), ctw = node_weights(tb, tf, p);
+                                    const SubForce cap{ch, ctw, e.offset_gradient * caps[size_t(k)].normal, nt, ch, ctw};
+                                    if (keep_forces) c.sub_forces.push_back(cap);
+                                    else cap.spread(hb, tb);
+                                }
                             }
                             // a face pulling away faster than its springs relax: the dashpot
                             // cancels the spring (the force is clipped at zero, nothing pushes), so
