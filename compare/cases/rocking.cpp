@@ -15,7 +15,6 @@
 #include "cases/case_util.hpp"
 #include "cases/case_kind.hpp"
 #include "cases/winkler_model.hpp"
-#include "metrics/signal.hpp"
 
 namespace cairn::cases {
 
@@ -62,15 +61,6 @@ Model model_for(const Scene& scene, ContactKind contact) {
 oracle::WinklerTrace winkler_trace(const Scene& scene, ContactKind contact, double until) {
     return winkler_model(scene, contact, rocking_axis(scene))
         .rock(scene.reference->values.at("theta0"), until + 1e-9, 1e-3);
-}
-
-/// θ of the Winkler trace at the given ascending times (rad)
-std::vector<double> winkler_angles(const oracle::WinklerTrace& tr, const std::vector<double>& t) {
-    const metrics::Series theta{tr.t, tr.theta};
-    std::vector<double> out;
-    out.reserve(t.size());
-    for (double x : t) out.push_back(metrics::interpolate(theta, x));
-    return out;
 }
 
 /// why a variant of Model::none has no reference after its first impact

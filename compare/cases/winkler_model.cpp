@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "cases/case_util.hpp"
+#include "metrics/signal.hpp"
 
 namespace cairn::cases {
 
@@ -35,6 +36,14 @@ std::string winkler_unmodelled(const Scene& scene, ContactKind contact, const Ve
         return "the mesh times the sub-division cuts the faces finer than the oracle's " +
                std::to_string(oracle::WinklerRocking::max_cells) + " cells";
     return "";
+}
+
+std::vector<double> winkler_angles(const oracle::WinklerTrace& tr, const std::vector<double>& t) {
+    const metrics::Series theta{tr.t, tr.theta};
+    std::vector<double> out;
+    out.reserve(t.size());
+    for (double x : t) out.push_back(metrics::interpolate(theta, x));
+    return out;
 }
 
 }  // namespace cairn::cases

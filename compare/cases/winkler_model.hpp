@@ -4,6 +4,7 @@
 /// judge dem against it (winkler_rocking, ground_rocking).
 
 #include <string>
+#include <vector>
 
 #include "analytic/winkler_rocking.hpp"
 #include "cases/case_analysis.hpp"
@@ -18,5 +19,8 @@ oracle::WinklerRocking winkler_model(const Scene& scene, ContactKind contact, co
 /// why a variant's contact is not the Winkler model's (rigid contact, an engine's matched contact,
 /// the paper scheme, damping by time, too many cells), or empty when the oracle models it
 std::string winkler_unmodelled(const Scene& scene, ContactKind contact, const Vec3& axis);
+
+/// θ of the oracle's samples at the given ascending times, linear between them (rad)
+std::vector<double> winkler_angles(const oracle::WinklerTrace& tr, const std::vector<double>& t);
 
 }  // namespace cairn::cases

@@ -29,18 +29,9 @@ std::string unmodelled(const Scene& scene, ContactKind contact) {
 
 double release_tilt(const Scene& scene) { return scene.reference->values.at("theta0"); }
 
-/// θ of the oracle's samples at the given ascending times, linear between them (rad)
-std::vector<double> angles_at(const oracle::WinklerTrace& tr, const std::vector<double>& t) {
-    const metrics::Series theta{tr.t, tr.theta};
-    std::vector<double> out;
-    out.reserve(t.size());
-    for (double x : t) out.push_back(metrics::interpolate(theta, x));
-    return out;
-}
-
 std::vector<double> winkler_curve(const Scene& scene, ContactKind contact, const std::vector<double>& t) {
     if (t.empty() || !unmodelled(scene, contact).empty()) return {};
-    return angles_at(winkler_block(scene, contact).rock(release_tilt(scene), t.back() + 1e-9, 1e-3), t);
+    return winkler_angles(winkler_block(scene, contact).rock(release_tilt(scene), t.back() + 1e-9, 1e-3), t);
 }
 
 CaseAnalysis analyse_winkler(const Scene& scene, const std::vector<Sample>& s, ContactKind contact) {
@@ -63,7 +54,7 @@ CaseAnalysis analyse_winkler(const Scene& scene, const std::vector<Sample>& s, C
         return out;
     }
     const auto tr = winkler_block(scene, contact).rock(th0, th.t.back() + 1e-9, 1e-3);
-    out.analytic = angles_at(tr, th.t);
+    out.analytic = winkler_angles(tr, th.t);
     out.analytic_key = "Winkler base";
     out.analytic_label = "rigid block on a no-tension Winkler base of modulus kn (shear springs and dashpots as dem's, "
                          "per sub-contact), integrated independently";
