@@ -21,39 +21,115 @@ const LoadDef* pull(const Scene& scene) {
     return nullptr;
 }
 
+/// the horizontal unit direction of the loads on the reference block (their sum), +x if none
+Vec3 push_direction(const Scene& scene) {
+    Vec3 sum = Vec3::Zero();
+    for (const auto& l : scene.loads) sum += l.force;
+    const Vec3 up = -scene.gravity.normalized();
+    const Vec3 h = sum - sum.dot(up) * up;
+    return h.norm() > 0.0 ? Vec3(h.normalized()) : Vec3::UnitX();
+}
+
 /// refuses a drive the friction oracle leaves out: a ground motion, loads on other blocks, an
-/// initial velocity, or loads on the block whose sum is not the reference's horizontal `force`
+/// initial velocity, loads on the block whose sum is not the reference's horizontal `force`, a
+/// push that twists the block about the vertical, loads at different heights, or a push at an
+/// angle to the sides of an upright block (the oracle is the block on a Winkler base in the
+/// vertical plane of the push)
 void check_friction(const Scene& scene) {
     require_drive_modelled(scene, scene.reference->kind, {true, false});
     Vec3 sum = Vec3::Zero();
     for (const auto& l : scene.loads) sum += l.force;
     const Vec3 up = -scene.gravity.normalized();
     const double horizontal = (sum - sum.dot(up) * up).norm(), H = scene.reference->values.at("force");
+    const std::string key = scene.source + ": reference.force = " + std::to_string(H) + " N: ";
     // 1e-6 of the force: a value written to seven digits
     if (std::abs(sum.dot(up)) > 1e-6 * sum.norm() || std::abs(horizontal - H) > 1e-6 * std::max(H, horizontal)) {
         char why[200];
         std::snprintf(why, sizeof why, "the loads on its block sum to %.7g N horizontal and %.7g N vertical", horizontal,
                       sum.dot(up));
-        throw Error(scene.source + ": reference.force = " + std::to_string(H) + " N: " + why +
-                    "; the friction reference models one horizontal force of that size");
+        throw Error(key + why + "; the friction reference models one horizontal force of that size");
     }
+    const BlockDef& b = scene.blocks.at(size_t(scene.reference->block));
+    const Vec3 d = push_direction(scene), centre = mass_properties(b.corners, 1.0).centre;
+    double size = 0.0;
+    for (const auto& c : b.corners) size = std::max(size, (c - centre).norm());
+    double twist = 0.0, h0 = NAN;
+    for (const auto& l : scene.loads) {
+        const Vec3 r = b.orientation * (l.point - centre);   // from the centre of mass, world
+        twist += r.cross(l.force).dot(up);
+        const double h = r.dot(up);
+        if (std::isnan(h0)) h0 = h;
+        if (std::abs(h - h0) > 1e-6 * size)
+            throw Error(key + "its loads act at different heights (" + std::to_string(h0) + " and " + std::to_string(h) +
+                        " m above the centre of mass); the friction reference models one force at one height");
+    }
+    if (std::abs(twist) > 1e-6 * H * size) {
+        char why[240];
+        std::snprintf(why, sizeof why,
+                      "its loads twist the block about the vertical through its centre of mass by %.4g N·m (the "
+                      "push's line of action misses the centre by %.4g m)",
+                      twist, std::abs(twist) / H);
+        throw Error(key + why + "; the friction reference (a block on a Winkler base in the plane of the push) "
+                                "leaves out the base's resistance to torsion");
+    }
+    // upright, and pushed along one of its sides
+    const Vec3 ax = b.orientation * Vec3::UnitX(), ay = b.orientation * Vec3::UnitY(), az = b.orientation * Vec3::UnitZ();
+    if (std::abs(az.dot(up)) < 1 - 1e-9 || std::min(1 - std::abs(ax.dot(d)), 1 - std::abs(ay.dot(d))) > 1e-9)
+        throw Error(key + "the block is not upright with a side along the push; the friction reference models a "
+                          "block pushed along one of its sides on a horizontal base");
 }
 
 /// the reference block on a Winkler base with the scene's law, and the height (m) of the load above
-/// its base (block frame: load point minus the lowest corner)
+/// its base: its base's length along the push and across it (world), the load point's height
+/// above its lowest corner
 oracle::WinklerBlock winkler(const Scene& scene, double* height) {
     const int a = scene.reference->block;
     const BlockDef& d = scene.blocks.at(size_t(a));
+    const Vec3 up = -scene.gravity.normalized(), along = push_direction(scene), across = up.cross(along);
     double xlo = 1e300, xhi = -1e300, ylo = 1e300, yhi = -1e300, zlo = 1e300;
-    for (const auto& c : d.corners) {
-        xlo = std::min(xlo, c.x()), xhi = std::max(xhi, c.x());
-        ylo = std::min(ylo, c.y()), yhi = std::max(yhi, c.y());
-        zlo = std::min(zlo, c.z());
+    for (const auto& corner : d.corners) {
+        const Vec3 c = d.orientation * corner;
+        xlo = std::min(xlo, c.dot(along)), xhi = std::max(xhi, c.dot(along));
+        ylo = std::min(ylo, c.dot(across)), yhi = std::max(yhi, c.dot(across));
+        zlo = std::min(zlo, c.dot(up));
     }
     const LoadDef* l = pull(scene);
-    *height = l ? l->point.z() - zlo : 0.0;
+    *height = l ? (d.orientation * l->point).dot(up) - zlo : 0.0;
     return {xhi - xlo, yhi - ylo, scene.contact.kn, scene.contact.ks, scene.contact.friction,
             block_mass(scene, a) * gravity(scene)};
+}
+
+/// the series of a material point's position along the push, m: block-frame point `local` of the
+/// reference block (the samples carry its centre of mass and orientation); from its first sample
+/// when `relative`
+metrics::Series along_push(const Scene& scene, const std::vector<Sample>& s, const Vec3& local, bool relative) {
+    const Vec3 d = push_direction(scene);
+    const int f = free_index(scene, scene.reference->block);
+    const Vec3 com = mass_properties(scene.blocks.at(size_t(scene.reference->block)).corners, 1.0).centre;
+    metrics::Series out;
+    for (const auto& x : s) {
+        const BlockState& b = x.blocks.at(size_t(f));
+        out.t.push_back(x.t);
+        out.y.push_back((b.position + b.orientation * (local - com)).dot(d));
+    }
+    if (relative && !out.y.empty()) {
+        const double y0 = out.y.front();
+        for (double& y : out.y) y -= y0;
+    }
+    return out;
+}
+
+/// the centre of the reference block's base, block frame: the probe named "base" where the scene
+/// has one, else under the centre of mass at the lowest corner's height (the block is upright)
+Vec3 base_centre(const Scene& scene) {
+    const int p = probe_index(scene, "base");
+    if (p >= 0) return scene.probes.at(size_t(p)).point;
+    const BlockDef& b = scene.blocks.at(size_t(scene.reference->block));
+    Vec3 c = mass_properties(b.corners, 1.0).centre;
+    double zlo = 1e300;
+    for (const auto& corner : b.corners) zlo = std::min(zlo, corner.z());
+    c.z() = zlo;
+    return c;
 }
 
 std::vector<double> friction_curve(const Scene& scene, ContactKind, const std::vector<double>& t) {
@@ -87,8 +163,8 @@ CaseAnalysis analyse_friction(const Scene& scene, const std::vector<Sample>& s, 
     const double T = s.back().t;
     CaseAnalysis r;
     if (scene.reference->kind == "slide") {
-        Series x = com_series(s, free_index(scene, a), 0, true);
-        r.quantity = "x displacement of A's centre of mass, m";
+        Series x = along_push(scene, s, mass_properties(scene.blocks.at(size_t(a)).corners, 1.0).centre, true);
+        r.quantity = "displacement of A's centre of mass along the push, m";
         r.measured = x;
         r.analytic = friction_curve(scene, {}, x.t);
         r.analytic_label = "s = a t²/2, a = (H/W − μ) g";
@@ -103,13 +179,12 @@ CaseAnalysis analyse_friction(const Scene& scene, const std::vector<Sample>& s, 
     }
     // from where the scene placed it: a settled start has taken up part of the shear before t = 0
     // when the load acts from t = 0 (docs/dem.md, Settled start)
-    int p = probe_index(scene, "base");
-    Series u = p >= 0 ? probe_series(s, p, 0, false) : com_series(s, free_index(scene, a), 0, false);
+    const Vec3 local = base_centre(scene);
+    Series u = along_push(scene, s, local, false);
     const BlockDef& placed = scene.blocks.at(size_t(a));
-    const Vec3 local = p >= 0 ? scene.probes.at(size_t(p)).point : mass_properties(placed.corners, 1.0).centre;
-    const double x0 = (placed.position + placed.orientation * local).x();
+    const double x0 = (placed.position + placed.orientation * local).dot(push_direction(scene));
     for (double& y : u.y) y -= x0;
-    r.quantity = "x displacement of A's base centre, m";
+    r.quantity = "displacement of A's base centre along the push, m";
     r.measured = u;
     r.analytic = friction_curve(scene, {}, u.t);
     double h = 0.0;

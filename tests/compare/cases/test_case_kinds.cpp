@@ -275,6 +275,27 @@ TEST_CASE("every shipped scene passes its kind's check; a drive a kind's oracle 
     extra.force = Vec3(100, 0, 0);
     pushed.loads.push_back(extra);
     CHECK_THAT(refusal(pushed), Catch::Contains("reference.force"));
+    // the stick block pushed off its centre line: the base's torsion, which the Winkler block in
+    // the plane of the push leaves out (a 0.5 m cube pushed at a top corner by 0.3 W spins off on
+    // dem's distributed base friction and holds on the rigid engines' four corner contacts)
+    Scene twisted = shipped("paper/friction_stick");
+    twisted.loads.front().point.y() += 0.1;
+    CHECK_THAT(refusal(twisted), Catch::Contains("twist the block about the vertical"));
+    // two pushes summing to the force at different heights: one force at one height is modelled
+    Scene split = shipped("paper/friction_stick");
+    LoadDef upper = split.loads.front(), lower = split.loads.front();
+    upper.force *= 0.5, lower.force *= 0.5;
+    upper.point.z() += 0.1, lower.point.z() -= 0.1;
+    split.loads = {upper, lower};
+    CHECK_THAT(refusal(split), Catch::Contains("different heights"));
+    // pushed at an angle to its sides: its base's corner lifts, not an edge
+    Scene angled = shipped("paper/friction_stick");
+    angled.blocks.at(size_t(angled.reference->block)).orientation = Quat(Eigen::AngleAxisd(0.3, Vec3::UnitZ()));
+    CHECK_THAT(refusal(angled), Catch::Contains("a side along the push"));
+    // pushed along y, it is modelled
+    Scene along_y = shipped("paper/friction_stick");
+    along_y.loads.front().force = Vec3(0, along_y.loads.front().force.norm(), 0);
+    CHECK(refusal(along_y).empty());
     // Newmark's block launched: along its base it is modelled; spun, or tipping as friction stops
     // it (μ = 1.2 above the cube's b/h = 1), it is not
     Scene launched = shipped("earthquake/block_pulse_slide");
@@ -341,4 +362,19 @@ TEST_CASE("arch reference: the energy balance is judged where the backend books 
     const auto rigid = closure(kind.analyse(s, run, {false}));
     CHECK(rigid.check == metrics::Check::info);
     CHECK(rigid.value == Approx(0.5));   // 1 J lost of 1 J kinetic + 1 J of potential exchanged
+}
+
+TEST_CASE("friction references measure along the push, whichever horizontal side it is along", "[cases]") {
+    // the shipped slide pushed along y instead of x: the block slides along y at (H/W − μ)g;
+    // measured along x it would stand still and miss
+    Scene s = shipped("paper/friction_slide");
+    s.loads.front().force = Vec3(0, s.reference->values.at("force"), 0);
+    const double acc = 0.981;   // (H/W − μ) g of the shipped scene
+    const auto& kind = cases::case_kind("slide", s.source);
+    kind.check(s);
+    const auto along_y = kind.analyse(s, synthetic_run(s, 1.0, 1e-3, [=](double t) { return Vec3(0, 0.5 * acc * t * t, 0); }, upright), {true});
+    CHECK(along_y.metrics.front().pass());
+    CHECK(along_y.metrics.front().value == Approx(acc).epsilon(1e-3));
+    const auto along_x = kind.analyse(s, synthetic_run(s, 1.0, 1e-3, [=](double t) { return Vec3(0.5 * acc * t * t, 0, 0); }, upright), {true});
+    CHECK_FALSE(along_x.metrics.front().pass());
 }
