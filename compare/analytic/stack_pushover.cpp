@@ -92,7 +92,7 @@ bool newton(const std::function<Eigen::VectorXd(const Eigen::VectorXd&)>& full, 
     return full(x).norm() < 1e-6 * force_scale;
 }
 
-/// the base joint's rotations of the continuation: geometric from a hundredth of the smallest
+/// the rotations (of the top, or the base joint's lean) of the continuation: geometric from a hundredth of the smallest
 /// rotation that lifts a joint's edge (θ = 2N/(kn·d·b²): at any kn the first steps find the joints
 /// closed, where the path starts from λ = 0) to 0.3 rad, 3000 of them
 std::vector<double> base_rotations(const std::vector<StackLayer>& l, const std::vector<double>& nforce, double kn) {
@@ -108,7 +108,7 @@ std::vector<double> base_rotations(const std::vector<StackLayer>& l, const std::
     return r;
 }
 
-/// continuation along the quasi-static path: base rotation φ0 given, (λ, φ1 … φn−1) solved;
+/// continuation along the quasi-static path: the top's rotation given, (λ, φ1 … φn−1) solved;
 /// empty when a step does not converge
 std::vector<PathPoint> winkler_path(const std::vector<StackLayer>& l, double g, double kn) {
     const size_t n = l.size();
@@ -133,20 +133,20 @@ std::vector<PathPoint> winkler_path(const std::vector<StackLayer>& l, double g, 
         return r;
     };
     std::vector<PathPoint> path;
-    // unknowns x = (λ, φ1 … φn−1) for a given φ0
+    // unknowns x = (λ, φ1 … φn−1) for a given rotation of the top, φ0 = top − φ1 − … − φn−1: the
+    // top turns on whichever joint opens (a base joint's rotation turns back where an upper joint
+    // is the mechanism, and a path run in it is lost there)
     Eigen::VectorXd x = Eigen::VectorXd::Zero(n);
-    for (const double phi0 : base_rotations(l, nforce, kn)) {
+    for (const double top : base_rotations(l, nforce, kn)) {
         auto full = [&](const Eigen::VectorXd& y) {
             Eigen::VectorXd phi(n);
-            phi[0] = phi0;
-            for (size_t k = 1; k < n; ++k) phi[k] = y[k];
+            phi[0] = top;
+            for (size_t k = 1; k < n; ++k) phi[k] = y[k], phi[0] -= y[k];
             return residual(phi, y[0]);
         };
-        Eigen::VectorXd scale = Eigen::VectorXd::Constant(long(n), phi0);   // the joints' rotations
-        scale[0] = 1.0;                                                      // λ
+        Eigen::VectorXd scale = Eigen::VectorXd::Constant(long(n), top);   // the joints' rotations
+        scale[0] = 1.0;                                                     // λ
         if (!newton(full, x, scale, force_scale)) return {};
-        double top = phi0;
-        for (size_t k = 1; k < n; ++k) top += x[k];
         path.push_back({x[0], top});
     }
     return path;
@@ -246,22 +246,37 @@ struct Monolith {
     double m = 0.0, h = 0.0, b = 0.0, i = 0.0;
 };
 
-Monolith monolith_of(const std::vector<StackLayer>& layers) {
+/// the layers above bed joint j as one body about that joint's leading edge (pushed along the
+/// layers' width)
+Monolith monolith_of(const std::vector<StackLayer>& layers, size_t j) {
     Monolith r;
     double mz = 0.0, z = 0.0;
-    for (const auto& l : layers) {
-        r.m += l.mass;
-        mz += l.mass * (z + 0.5 * l.height);
-        z += l.height;
+    for (size_t k = j; k < layers.size(); ++k) {
+        r.m += layers[k].mass;
+        mz += layers[k].mass * (z + 0.5 * layers[k].height);
+        z += layers[k].height;
     }
-    r.h = mz / r.m, r.b = 0.5 * layers[0].width;
+    r.h = mz / r.m, r.b = 0.5 * joint_width(layers, j);
     z = 0.0;
-    for (const auto& l : layers) {   // own inertia + m·distance² to the edge
+    for (size_t k = j; k < layers.size(); ++k) {   // own inertia + m·distance² to the edge
+        const StackLayer& l = layers[k];
         const double zc = z + 0.5 * l.height;
         r.i += l.mass * (l.width * l.width + l.height * l.height) / 12.0 + l.mass * (r.b * r.b + zc * zc);
         z += l.height;
     }
     return r;
+}
+
+/// the bed joint of the least rigid multiplier along the width (the first of equals): the
+/// mechanism the stack turns by
+size_t critical_joint(const std::vector<StackLayer>& layers) {
+    size_t best = 0;
+    double least = INFINITY;
+    for (size_t j = 0; j < layers.size(); ++j) {
+        const Monolith m = monolith_of(layers, j);
+        if (m.b / m.h < least * (1 - 1e-12)) least = m.b / m.h, best = j;
+    }
+    return best;
 }
 
 /// RK4 at 1e-4 s of θ̈ = acc(t, θ) from (θ0, 0) at t = 0: the time (s) at which θ reaches
@@ -290,8 +305,9 @@ double time_to_rotation(const std::function<double(double, double)>& acc, double
 }  // namespace
 
 double BlockStack::rigid_ramp_time(const std::function<double(double)>& lambda, double rotation, double until) const {
+    // the layers above the critical joint about its edge (the whole stack where it is the base):
     // θ̈ = (m g/i)[λ(t)(h cos θ − b sin θ) − (b cos θ − h sin θ)], held at θ = 0 while that is < 0
-    const Monolith s = monolith_of(layers);
+    const Monolith s = monolith_of(layers, critical_joint(layers));
     auto acc = [&](double t, double a) {
         const double torque =
             s.m * g * (lambda(t) * (s.h * std::cos(a) - s.b * std::sin(a)) - (s.b * std::cos(a) - s.h * std::sin(a)));
@@ -320,7 +336,7 @@ double BlockStack::winkler_ramp_time(double kn, const std::function<double(doubl
     // the rigid monolith's equation, θ̈ = (m g/i)(h cos θ − b sin θ)(λ(t) − λ_s(θ)), with the
     // Winkler stack's quasi-static multiplier λ_w in place of the rigid λ_s; from its static state
     // under λ(0) on the rising branch
-    const Monolith s = monolith_of(layers);
+    const Monolith s = monolith_of(layers, critical_joint(layers));
     const PathPoint peak = path_peak(path);
     const double lambda0 = lambda(0.0);
     if (std::isnan(peak.lambda) || std::abs(lambda0) >= peak.lambda) return NAN;

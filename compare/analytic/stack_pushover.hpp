@@ -33,7 +33,7 @@ struct BlockStack {
     /// joints of no-tension Winkler springs kn (N/m³, the penalty contact integrated over the
     /// joint): each joint opens gradually (its moment tends to N·B/2 only as its rotation grows)
     /// while the layers above lean over it, so the quasi-static path of λ against rotation has a
-    /// peak below the rigid value; returns that peak, found by continuation in the base joint's
+    /// peak below the rigid value; returns that peak, found by continuation in the top's
     /// rotation with the other joints in equilibrium (small rotations). At an angle to the layers'
     /// axes each joint leans in two directions (a corner lifts first): the continuation runs in the
     /// size of the base joint's lean, its direction solved with the rest. → rigid_multiplier() as

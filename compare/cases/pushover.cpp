@@ -246,6 +246,21 @@ CaseAnalysis analyse_pushover(const Scene& scene, const std::vector<Sample>& s, 
     const double lambda_ref = winkler ? lambda_winkler : lambda_rigid;
     const std::string basis = winkler ? winkler_basis : rigid_basis + "; 2 %";
     auto up = crossings(r.measured, threshold, Crossing::up);
+    const bool path_lost = winkler && std::isnan(peak);   // the Winkler continuation found no peak
+    if (std::isnan(lambda_ref) && !path_lost) {
+        // the reference does not turn that far within the run: neither may the stack
+        double largest = 0.0, record = 0.0;
+        for (size_t i = 0; i < r.measured.t.size(); ++i)
+            largest = std::max(largest, std::abs(r.measured.y[i])),
+            record = std::max(record, std::abs(ground_multiplier(scene, r.measured.t[i])));
+        r.metrics.push_back(at_most("largest rotation of " + scene.blocks[scene.reference->block].name, "rad", largest,
+                                    threshold, 0.0,
+                                    (winkler ? winkler_basis : rigid_basis) + ": under the record's largest a/g " +
+                                        fixed4(record) + " it does not turn " + fixed4(threshold) +
+                                        " rad within the run"));
+        if (!up.empty()) r.event_time = up.front(), r.has_event = true;
+        return r;
+    }
     if (up.empty()) {
         r.metrics.push_back(missing(name, "", lambda_ref, 0.02, Check::relative, basis + " (never turned that far)"));
         return r;

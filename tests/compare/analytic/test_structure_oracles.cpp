@@ -79,6 +79,29 @@ TEST_CASE("a rigid stack under a ramp tips when λ passes B/H plus the ramp's la
     CHECK(std::isnan(column.rigid_ramp_time([](double) { return 0.25; }, 0.05, 10.0)));   // below B/H: never
 }
 
+TEST_CASE("a stack narrower above turns about its critical joint, rigid or on Winkler joints", "[oracle][pushover]") {
+    // two 0.5 × 0.5 × 0.4 m blocks under two 0.3 × 0.3 × 0.4 m ones: the upper two turn about the
+    // narrower joint at λ = 0.15/0.4 = 0.375, the whole stack about the base only at 0.408
+    const double big = 0.5 * 0.5 * 0.4 * 2600.0, small = 0.3 * 0.3 * 0.4 * 2600.0;
+    const BlockStack taper{{{0.4, 0.5, 0.5, big}, {0.4, 0.5, 0.5, big}, {0.4, 0.3, 0.3, small}, {0.4, 0.3, 0.3, small}},
+                           9.81};
+    CHECK(taper.rigid_multiplier() == Approx(0.375).epsilon(1e-12));
+    auto ramp = [](double t) { return t < 2 ? 0.15 * t : 0.3 + 2.5e-3 * (t - 2); };
+    // the sub-stack's lag, not the monolith's: measured 0.3783 (Bullet 0.3779, Siconos 0.3781);
+    // about the base it would be past 0.408
+    const double rigid = ramp(taper.rigid_ramp_time(ramp, 0.05, 100.0));
+    CHECK(rigid > 0.375);
+    CHECK(rigid < 0.385);
+    // the Winkler path runs in the top's rotation, which the upper joint turns while the base's
+    // stays put (a path in the base joint's rotation was lost there): its peak, then the lag
+    const double peak = taper.winkler_multiplier(1e10);
+    REQUIRE(std::isfinite(peak));
+    CHECK(peak < 0.375);
+    const double winkler = ramp(taper.winkler_ramp_time(1e10, ramp, 0.05, 100.0));
+    CHECK(winkler > peak);
+    CHECK(winkler < rigid);   // measured 0.3601; dem 0.3594
+}
+
 TEST_CASE("a stack on Winkler joints under a ramp tips past its peak, and as the rigid stack as kn grows",
           "[oracle][pushover]") {
     const double m = 0.4 * 0.4 * 0.5 * 2600.0;
