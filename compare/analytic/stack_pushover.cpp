@@ -101,7 +101,7 @@ std::vector<double> base_rotations(const std::vector<StackLayer>& l, const std::
         const double b = std::min(joint_width(l, j), joint_depth(l, j));
         lift = std::min(lift, 2.0 * nforce[j] / (kn * std::max(joint_width(l, j), joint_depth(l, j)) * b * b));
     }
-    const double first = std::min(0.01 * lift, 1e-4), last = 0.3;
+    const double first = std::min(0.01 * lift, 1e-4), last = BlockStack::kWinklerPathEnd;
     const int steps = 3000;
     std::vector<double> r;
     for (int s = 0; s < steps; ++s) r.push_back(first * std::pow(last / first, double(s) / (steps - 1)));

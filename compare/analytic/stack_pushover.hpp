@@ -22,6 +22,8 @@ struct StackLayer {
 struct BlockStack {
     std::vector<StackLayer> layers;   ///< bottom to top
     double g = 9.81;                  ///< m/s²
+    /// rad: the Winkler path's continuation runs to this rotation (of the top, or the base's lean)
+    static constexpr double kWinklerPathEnd = 0.3;
     double push_angle = 0.0;          ///< rad, from the layers' first (width) axis to the push
 
     /// rigid blocks: the least λ over the mechanisms "all the layers above bed joint j turn as one

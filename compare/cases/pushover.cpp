@@ -235,9 +235,9 @@ CaseAnalysis analyse_pushover(const Scene& scene, const std::vector<Sample>& s, 
     r.measured = rotation_series(s, free_index(scene, scene.reference->block));
     r.quantity = "rotation of " + scene.blocks[scene.reference->block].name + ", rad";
     const std::string name = "a/g when the top turns " + fixed4(threshold) + " rad";
-    const std::string rigid_basis = "rigid monolith about its base edge under the scene's ramp (RK4): B/H = " +
-                                    fixed4(quasi_static) + " plus the ramp's lag " +
-                                    fixed4(lambda_rigid - quasi_static);
+    const std::string rigid_basis =
+        "the layers above the critical bed joint as one rigid body about its edge under the scene's ramp (RK4): B/H = " +
+        fixed4(quasi_static) + " plus the ramp's lag " + fixed4(lambda_rigid - quasi_static);
     const std::string winkler_basis =
         "the stack on no-tension Winkler bed joints of modulus kn (dem's overlap contact): the monolith's rocking "
         "equation with the joints' quasi-static multiplier in place of the rigid one, under the scene's ramp (RK4): "
@@ -246,8 +246,20 @@ CaseAnalysis analyse_pushover(const Scene& scene, const std::vector<Sample>& s, 
     const double lambda_ref = winkler ? lambda_winkler : lambda_rigid;
     const std::string basis = winkler ? winkler_basis : rigid_basis + "; 2 %";
     auto up = crossings(r.measured, threshold, Crossing::up);
-    const bool path_lost = winkler && std::isnan(peak);   // the Winkler continuation found no peak
-    if (std::isnan(lambda_ref) && !path_lost) {
+    // the Winkler continuation found no peak, or ends before the threshold: no reference
+    const bool path_lost = winkler && (std::isnan(peak) || threshold >= oracle::BlockStack::kWinklerPathEnd);
+    if (path_lost) {
+        double largest = 0.0;
+        for (double y : r.measured.y) largest = std::max(largest, std::abs(y));
+        if (!up.empty()) r.event_time = up.front(), r.has_event = true;
+        r.metrics.push_back(info(up.empty() ? "largest rotation of " + scene.blocks[scene.reference->block].name : name,
+                                 up.empty() ? "rad" : "", up.empty() ? largest : ground_multiplier(scene, up.front()),
+                                 up.empty() ? threshold : lambda_rigid,
+                                 "not judged: the Winkler stack's path found no peak before the threshold (its "
+                                 "continuation lost, or the threshold past its end); against the " + rigid_basis));
+        return r;
+    }
+    if (std::isnan(lambda_ref)) {
         // the reference does not turn that far within the run: neither may the stack
         double largest = 0.0, record = 0.0;
         for (size_t i = 0; i < r.measured.t.size(); ++i)
@@ -268,13 +280,8 @@ CaseAnalysis analyse_pushover(const Scene& scene, const std::vector<Sample>& s, 
     r.event_time = up.front();
     r.has_event = true;
     const double lambda = ground_multiplier(scene, up.front());
-    if (winkler && std::isnan(lambda_ref))
-        r.metrics.push_back(info(name, "", lambda, lambda_rigid,
-                                 "not judged: the Winkler stack's path found no peak before the threshold (kn "
-                                 "beyond its continuation's round-off); against the " + rigid_basis));
-    else
-        r.metrics.push_back(relative(name, "", lambda, lambda_ref, 0.02, basis));
-    if (winkler && !std::isnan(lambda_ref))
+    r.metrics.push_back(relative(name, "", lambda, lambda_ref, 0.02, basis));
+    if (winkler)
         r.metrics.push_back(info("a/g against the rigid monolith", "", lambda, lambda_rigid, rigid_basis));
     r.metrics.push_back(info("a/g against the quasi-static multiplier", "", lambda, quasi_static,
                              "least over the mechanisms 'all above a bed joint turn about its edge': B/H"));
