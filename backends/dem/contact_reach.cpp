@@ -32,13 +32,16 @@ int side_constraints(const PairGeometry& g, int s, const Vec3& hit_normal, bool 
             // plane (a brick hanging over the edge of its base, its bottom sunk a millimetre into
             // the base's top) entered through o, and the sliver of its side that lies behind o
             // must not be measured from s, a tenth of a metre away
+            // (most faces reach past the tolerance at their first corner: stop there)
             double reach = 0.0;
             int deepest = -1;
-            for (int i = 0; i < 4; ++i)
-                if (co - no.dot((*hit_face)[size_t(i)]) > reach) reach = co - no.dot((*hit_face)[size_t(i)]), deepest = i;
+            for (int i = 0; i < 4 && reach < tol; ++i) {
+                const double r = co - no.dot((*hit_face)[size_t(i)]);
+                if (r > reach) reach = r, deepest = i;
+            }
             if (reach < tol) {
                 tol = reach;
-                if (caps) (*caps)[size_t(k)] = ReachCap{deepest, no};
+                if (caps) (*caps)[size_t(k)] = ReachCap{deepest, o};
             }
         }
         out[k++] = Affine{ns - no, co - cs + tol};

@@ -26,10 +26,10 @@ constexpr int kMaxSideConstraints = 16;
 /// the hitting side does not face is at most how far the face's corners reach behind o's plane.
 /// Returns the count written to `out`.
 /// A closer constraint whose tolerance is the hitting face's reach behind side o: its offset moves
-/// with the face's corner `corner` (index into the face's quad) along o's outward normal `normal`.
+/// with the face's corner `corner` (index into the face's quad) along o's outward normal.
 struct ReachCap {
-    int corner = -1;              ///< -1: the constraint does not move with the hitting face
-    Vec3 normal = Vec3::Zero();   ///< o's outward unit normal
+    int corner = -1;   ///< -1: the constraint does not move with the hitting face
+    int side = -1;     ///< o: the target side whose plane the reach is measured from
 };
 
 int side_constraints(const PairGeometry& g, int s, const Vec3& hit_normal, bool loose,

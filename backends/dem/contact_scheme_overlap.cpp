@@ -365,7 +365,7 @@ void ContactSet::evaluate_overlap(std::vector<Block>& blocks, double dt, long be
                                 if (k < side_count && caps[size_t(k)].corner >= 0) {
                                     const Vec3& p = hq[size_t(caps[size_t(k)].corner)];
                                     const NodeWeights ch = node_weights(hb, c.hit_face, p), ctw = node_weights(tb, tf, p);
-                                    const SubForce cap{ch, ctw, e.offset_gradient * caps[size_t(k)].normal, nt, ch, ctw};
+                                    const SubForce cap{ch, ctw, e.offset_gradient * g.normal[size_t(caps[size_t(k)].side)], nt, ch, ctw};
                                     if (keep_forces) c.sub_forces.push_back(cap);
                                     else cap.spread(hb, tb);
                                 }
