@@ -83,8 +83,9 @@ double amplitude(const metrics::Series& th, double a, double b) {
 std::vector<double> rocking_curve(const Scene& scene, ContactKind contact, const std::vector<double>& t) {
     const auto hb = housner_block(scene);
     const double th0 = scene.reference->values.at("theta0");
-    if (model_for(scene, contact) == Model::springs) return spring_block(scene, contact).angles(th0, t);
-    if (model_for(scene, contact) == Model::winkler)
+    const Model model = model_for(scene, contact);
+    if (model == Model::springs) return spring_block(scene, contact).angles(th0, t);
+    if (model == Model::winkler)
         return t.empty() ? std::vector<double>{} : winkler_angles(winkler_trace(scene, contact, t.back()), t);
     // rigid contact; for a matched engine the curve is Housner's as a guide only
     return hb.angles(th0, hb.velocity_ratio(), t);
