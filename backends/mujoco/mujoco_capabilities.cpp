@@ -16,7 +16,8 @@ std::vector<FeatureSupport> mujoco_capabilities() {
         {Feature::elastic_stick, S::none, "soft velocity-level friction: slow creep instead of a shear spring"},
         {Feature::friction_shape, S::approximate, "elliptic cone (isotropic: sliding threshold 0.999-1.0005 mu·W at 0, 30 and 45 degrees); "
          "cone = \"pyramidal\" held beyond 1.6 mu·W at 30 and 45 degrees; a sliding block rises off its base "
-         "(convex model: 0.7 mm at 1 m/s, 6.5 mm at 4 m/s, rigid mode)"},
+         "(convex model: 0.7 mm at 1 m/s, 6.5 mm at 4 m/s, rigid mode) and hops, which makes a slide depend on its "
+         "direction: a 0.75 g pulse on a cube slides 0.08278 m along x or y, 0.0917 m (+10.9 %) along (0.8, 0.6)"},
         {Feature::twist_friction, S::approximate,
          "a face's friction acts at the corner contacts of the box-box collider: a square face under uniform weight holds a twist "
          "about its normal up to mu·W·a/√2, 1.85 times the mu·W·a·0.383 of friction spread over the face "

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cassert>
 #include <cmath>
+#include <cstdio>
 
 #include "error.hpp"
 #include "geometry/hexahedron.hpp"
@@ -150,6 +151,21 @@ void require_horizontal_base(const Scene& scene, const std::string& kind) {
             return;
         }
     throw Error(scene.source + ": a " + kind + " reference needs a fixed block as its base");
+}
+
+metrics::Metric slip_while_held(const metrics::Series& s, double t0, double t1, double tol, const std::string& basis,
+                                metrics::HeldDrift* held) {
+    const auto d = metrics::held_drift(s, t0, t1, 0.25 * tol);
+    if (held) *held = d;
+    if (d.resolved)
+        return metrics::absolute("slip while held", "m", d.drift, 0.0, tol,
+                                 "drift over " + std::string(d.ringing > 0.25 * tol ? "the lines through its turning points" : "a straight-line fit") + "; " + basis);
+    char why[200];
+    std::snprintf(why, sizeof why,
+                  "not judged: it rings by ±%.3g m with fewer than two swings in the window, so a drift cannot be "
+                  "told from the ringing (run longer); ",
+                  d.ringing);
+    return metrics::info("slip while held", "m", d.drift, 0.0, why + basis);
 }
 
 }  // namespace cairn::cases

@@ -7,6 +7,7 @@
 
 #include "analytic/oracles.hpp"
 #include "backend/backend.hpp"
+#include "metrics/metric.hpp"
 #include "metrics/signal.hpp"
 
 namespace cairn::cases {
@@ -60,5 +61,11 @@ metrics::Series com_series(const std::vector<Sample>& s, int f, int c, bool rela
 metrics::Series angle_series(const std::vector<Sample>& s, int f, const Vec3& axis);
 /// the sample times
 std::vector<double> times(const std::vector<Sample>& s);
+
+/// "slip while held": the drift of a held block's displacement `s` (m) over [t0, t1], its ringing
+/// taken out (metrics::held_drift, noise a quarter of `tol`), within `tol` (m) of 0; shown and not
+/// judged where the ringing hides it. `basis` ends the explanation; `held` receives the drift
+metrics::Metric slip_while_held(const metrics::Series& s, double t0, double t1, double tol, const std::string& basis,
+                                metrics::HeldDrift* held = nullptr);
 
 }  // namespace cairn::cases

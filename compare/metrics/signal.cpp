@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cassert>
 #include <cmath>
+#include <utility>
 
 #include <Eigen/Dense>
 
@@ -81,6 +82,37 @@ std::vector<double> polyfit(const Series& s, int degree, double t0, double t1) {
         }
     }
     return c;
+}
+
+HeldDrift held_drift(const Series& s, double t0, double t1, double noise) {
+    Series w;
+    for (size_t i = 0; i < s.t.size(); ++i)
+        if (s.t[i] >= t0 && s.t[i] <= t1) w.t.push_back(s.t[i]), w.y.push_back(s.y[i]);
+    HeldDrift r;
+    if (w.t.size() < 2) return r;
+    const double span = w.t.back() - w.t.front(), mid = 0.5 * (w.t.front() + w.t.back());
+    const auto line = polyfit(w, 1);
+    for (size_t i = 0; i < w.t.size(); ++i) r.ringing = std::max(r.ringing, std::abs(w.y[i] - line[0] - line[1] * w.t[i]));
+    r.drift = line[1] * span;
+    if (r.ringing <= noise) return r;
+    // a ringing signal: a straight line through it tilts with the phase at which the window cuts
+    // the swings; the lines through its maxima and through its minima do not
+    const auto hi = extrema(w, true, noise), lo = extrema(w, false, noise);
+    if (hi.size() < 2 || lo.size() < 2) {
+        r.resolved = false;
+        return r;
+    }
+    auto fit = [&](const std::vector<Extremum>& e) {
+        Series p;
+        for (const auto& x : e) p.t.push_back(x.t), p.y.push_back(x.y);
+        const auto c = polyfit(p, 1);
+        return std::pair{c[0] + c[1] * mid, c[1]};
+    };
+    const auto [top, top_slope] = fit(hi);
+    const auto [bottom, bottom_slope] = fit(lo);
+    r.drift = 0.5 * (top_slope + bottom_slope) * span;
+    r.ringing = 0.5 * (top - bottom);
+    return r;
 }
 
 double interpolate(const Series& s, double t) {

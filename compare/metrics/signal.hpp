@@ -34,6 +34,20 @@ std::vector<Extremum> extrema(const Series& s, bool maxima, double prominence);
 /// returns the coefficients, lowest power first
 std::vector<double> polyfit(const Series& s, int degree, double t0 = -1e300, double t1 = 1e300);
 
+/// the progressive drift of a signal held about a constant value, with its ringing taken out
+struct HeldDrift {
+    double drift = 0.0;     ///< change over the window, signal units: the mean slope of the lines
+                            ///< through its upper and lower turning points where it rings by more
+                            ///< than the noise, else the slope of a straight-line fit; times the window
+    double ringing = 0.0;   ///< half its peak-to-peak swing about that drift, signal units
+    bool resolved = true;   ///< false: it rings by more than the noise with fewer than two turning
+                            ///< points of each kind in the window, so drift and ringing cannot be told apart
+};
+
+/// the drift of s over t in [t0, t1]; `noise` (signal units, > 0) is the swing below which a
+/// straight-line fit is taken as it is and the prominence a turning point must have
+HeldDrift held_drift(const Series& s, double t0, double t1, double noise);
+
 /// y at time t, linear between samples, clamped to the ends
 double interpolate(const Series& s, double t);
 

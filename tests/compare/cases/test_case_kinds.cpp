@@ -292,6 +292,30 @@ TEST_CASE("every shipped scene passes its kind's check; a drive a kind's oracle 
     Scene angled = shipped("paper/friction_stick");
     angled.blocks.at(size_t(angled.reference->block)).orientation = Quat(Eigen::AngleAxisd(0.3, Vec3::UnitZ()));
     CHECK_THAT(refusal(angled), Catch::Contains("a side along the push"));
+    // pushed at its top (0.5 m above its base) by 0.55 W: H·h/W = 0.275 m > B/2, it tips; by 0.45 W
+    // on kn = 1e9 it holds with the reaction 0.2256 m out (0.225 plus the weight's shift h_c·θ)
+    Scene tipped = shipped("paper/friction_stick");
+    tipped.loads.front().point = Vec3(0, 0, 0.25);
+    tipped.contact.kn = tipped.contact.ks = 1e9;
+    const double weight = tipped.reference->values.at("force") / 0.5;
+    tipped.loads.front().force.x() = tipped.reference->values["force"] = 0.55 * weight;
+    CHECK_THAT(refusal(tipped), Catch::Contains("the push tips the block"));
+    tipped.loads.front().force.x() = tipped.reference->values["force"] = 0.45 * weight;
+    CHECK(refusal(tipped).empty());
+    // on the paper's kn = 3e7 the tilt on the 0.075 m contact is 0.076 rad: the weight's shift over
+    // it carries the reaction past the edge
+    tipped.contact.kn = tipped.contact.ks = 3e7;
+    CHECK_THAT(refusal(tipped), Catch::Contains("weight's shift over the tilt"));
+    // sliding, pushed at its top: W·e = H·h − (H − μW)·h_c; by 0.7 W at μ = 0.25,
+    // (0.35 − 0.1125)·W = 0.2375·W inside the 0.25 m half-base; by 1.2 W, (0.6 − 0.2375)·W out
+    Scene slid = shipped("paper/friction_slide");
+    const double slide_weight = slid.reference->values.at("force") / 0.5;
+    slid.loads.front().point = Vec3(0, 0, 0.25);
+    slid.contact.friction = 0.25;
+    slid.loads.front().force.x() = slid.reference->values["force"] = 0.7 * slide_weight;
+    CHECK(refusal(slid).empty());
+    slid.loads.front().force.x() = slid.reference->values["force"] = 1.2 * slide_weight;
+    CHECK_THAT(refusal(slid), Catch::Contains("tips the block as it slides"));
     // pushed along y, it is modelled
     Scene along_y = shipped("paper/friction_stick");
     along_y.loads.front().force = Vec3(0, along_y.loads.front().force.norm(), 0);

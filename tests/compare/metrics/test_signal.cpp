@@ -68,3 +68,51 @@ TEST_CASE("interpolation, means and shifted differences", "[metrics]") {
     CHECK(rms_difference(late, s, 0.0) > 1e-4);
     CHECK(rms_difference(late, s, 5e-3) == Approx(0.0).margin(1e-12));
 }
+
+namespace {
+// a held block's base: 40 µm of elastic shear, a 0.356 s rocking swing of ±8 µm (the 0.5 m cube
+// under 0.45 W at its top on dem's springs) and a creep of `rate` m/s
+double held_base(double t, double rate, double phase) {
+    return 4e-5 + 8e-6 * std::sin(2.0 * M_PI * t / 0.356 + phase) + rate * t;
+}
+Series held_series(double rate, double phase, double t1) {
+    Series s;
+    for (double t = 0.0; t <= t1 + 1e-12; t += 1e-3) s.t.push_back(t), s.y.push_back(held_base(t, rate, phase));
+    return s;
+}
+}  // namespace
+
+TEST_CASE("held drift: the ringing of a held block is taken out, a creep is not", "[metrics]") {
+    // a straight line through 2.1 periods of the swing tilts by up to ~0.4 of its amplitude,
+    // depending on where the window cuts it; the lines through the turning points do not
+    for (double phase : {0.0, 1.0, 2.0, 3.0, 4.0, 5.0}) {
+        INFO("phase " << phase);
+        const Series still = held_series(0.0, phase, 2.0);
+        const auto d = held_drift(still, 1.25, 2.0, 1e-7);
+        REQUIRE(d.resolved);
+        // the turning points are parabola-refined to far below 1 nm on 1 ms samples
+        CHECK(std::abs(d.drift) < 2e-9);
+        CHECK(d.ringing == Approx(8e-6).epsilon(1e-3));
+        // a creep of 2 µm/s: 1.5 µm over the 0.75 s window, whatever the phase (2e-3: the drift
+        // is over the samples in the window, whose ends fall within 1 ms of its bounds)
+        const auto c = held_drift(held_series(2e-6, phase, 2.0), 1.25, 2.0, 1e-7);
+        REQUIRE(c.resolved);
+        CHECK(c.drift == Approx(1.5e-6).epsilon(2e-3));
+    }
+    // the straight-line fit alone is fooled by the swing: the reason for the turning points
+    double worst = 0.0;
+    for (double phase : {0.0, 1.0, 2.0, 3.0, 4.0, 5.0})
+        worst = std::max(worst, std::abs(polyfit(held_series(0.0, phase, 2.0), 1, 1.25, 2.0)[1] * 0.75));
+    CHECK(worst > 2e-6);
+    // no swing above the noise: the straight-line fit, exact on a line
+    Series ramp;
+    for (double t = 0.0; t <= 2.0; t += 1e-3) ramp.t.push_back(t), ramp.y.push_back(3e-6 * t);
+    const auto r = held_drift(ramp, 1.0, 2.0, 1e-7);
+    CHECK(r.resolved);
+    CHECK(r.drift == Approx(3e-6).epsilon(1e-9));
+    CHECK(r.ringing < 1e-15);
+    // a swing slower than the window: fewer than two turning points of each kind, not resolved
+    Series slow;
+    for (double t = 0.0; t <= 2.0; t += 1e-3) slow.t.push_back(t), slow.y.push_back(1e-5 * std::sin(2.0 * M_PI * t / 1.5));
+    CHECK_FALSE(held_drift(slow, 1.25, 2.0, 1e-7).resolved);
+}
