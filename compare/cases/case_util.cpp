@@ -98,7 +98,31 @@ Vec3 rocking_axis(const Scene& scene) {
     return a.norm() > 0.0 ? a.normalized() : Vec3::UnitY();
 }
 
-oracle::HousnerBlock housner_block(const Scene& scene) { return housner_block(scene, rocking_axis(scene)); }
+Vec3 rocking_axis_block(const Scene& scene) {
+    return scene.blocks.at(size_t(scene.reference->block)).orientation.conjugate() * rocking_axis(scene);
+}
+
+void require_tilted_release(const Scene& scene, const std::string& kind) {
+    const BlockDef& d = scene.blocks.at(size_t(scene.reference->block));
+    const Vec3 up = -scene.gravity.normalized(), axis = rocking_axis(scene), height = d.orientation * Vec3::UnitZ();
+    const double theta0 = std::abs(scene.reference->values.at("theta0"));
+    const double lean = std::atan2(up.cross(height).norm(), up.dot(height));
+    // 1e-3 rad: an angle written to four decimals in degrees
+    char why[400] = "";
+    if (std::abs(axis.dot(up)) > 1e-3)
+        std::snprintf(why, sizeof why, "the rocking axis (%.4g, %.4g, %.4g) is not horizontal", axis.x(), axis.y(), axis.z());
+    else if (std::abs(height.dot(axis)) > 1e-3 || std::abs(lean - theta0) > 1e-3)
+        std::snprintf(why, sizeof why,
+                      "block %s's frame z (its height) leans %.5g rad from the vertical%s, not theta0 = %.5g rad about "
+                      "the rocking axis: the oracle releases the block leaning θ0 about that axis, its frame's z its "
+                      "height when upright",
+                      d.name.c_str(), lean, std::abs(height.dot(axis)) > 1e-3 ? " and out of the plane across the axis" : "",
+                      theta0);
+    if (why[0])
+        throw Error(scene.source + ": reference.kind = \"" + kind + "\": " + why);
+}
+
+oracle::HousnerBlock housner_block(const Scene& scene) { return housner_block(scene, rocking_axis_block(scene)); }
 
 oracle::HousnerBlock housner_block(const Scene& scene, const Vec3& axis) {
     const BlockDef& d = scene.blocks.at(size_t(scene.reference->block));

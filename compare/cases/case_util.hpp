@@ -34,6 +34,12 @@ double dashpot(const Scene& scene, double stiffness, double mass);
 
 /// the rocking axis of a housner reference (its axis_x/y/z values; default y), unit, world
 Vec3 rocking_axis(const Scene& scene);
+/// the same axis in the reference block's frame (whose z is its height when upright)
+Vec3 rocking_axis_block(const Scene& scene);
+/// refuses a tilted release (housner, winkler_rocking) the oracle does not describe, naming the
+/// kind: a rocking axis off the horizontal, or a block whose frame z does not lean θ0 from the
+/// vertical about that axis (1e-3 rad)
+void require_tilted_release(const Scene& scene, const std::string& kind);
 /// Housner's block of the reference block: half-width across the rocking axis and half-height,
 /// from its corners in the block frame
 oracle::HousnerBlock housner_block(const Scene& scene);

@@ -25,7 +25,7 @@ namespace {
 oracle::SpringBlock spring_block(const Scene& scene, ContactKind contact) {
     const int a = scene.reference->block;
     const BlockDef& d = scene.blocks.at(size_t(a));
-    const Vec3 axis = rocking_axis(scene), across = axis.cross(Vec3::UnitZ()).normalized();
+    const Vec3 axis = rocking_axis_block(scene), across = axis.cross(Vec3::UnitZ()).normalized();
     double lo = 1e300, hi = -1e300, alo = 1e300, ahi = -1e300, zlo = 1e300, zhi = -1e300;
     for (const auto& c : d.corners) {
         lo = std::min(lo, c.dot(across)), hi = std::max(hi, c.dot(across));
@@ -51,7 +51,7 @@ Model model_for(const Scene& scene, ContactKind contact) {
     if (!contact.point_springs) return Model::none;
     // the overlap scheme integrates kn over the face: the Winkler base (which says when it cannot)
     if (scene.contact.scheme == ContactScheme::overlap)
-        return winkler_unmodelled(scene, contact, rocking_axis(scene)).empty() ? Model::winkler : Model::none;
+        return winkler_unmodelled(scene, contact, rocking_axis_block(scene)).empty() ? Model::winkler : Model::none;
     // the spring block carries the ratio rule's dashpots; a damping time γ it does not model
     if (scene.contact.damping_rule != ContactDampingRule::time) return Model::springs;
     return Model::none;
@@ -59,14 +59,14 @@ Model model_for(const Scene& scene, ContactKind contact) {
 
 /// the Winkler base's rocking from the scene's release, sampled every millisecond, to `until` (s)
 oracle::WinklerTrace winkler_trace(const Scene& scene, ContactKind contact, double until) {
-    return winkler_model(scene, contact, rocking_axis(scene))
+    return winkler_model(scene, contact, rocking_axis_block(scene))
         .rock(scene.reference->values.at("theta0"), until + 1e-9, 1e-3);
 }
 
 /// why a variant of Model::none has no reference after its first impact
 std::string unmodelled_reason(const Scene& scene, ContactKind contact) {
     if (contact.point_springs && scene.contact.scheme == ContactScheme::overlap)
-        return "no reference models it: " + winkler_unmodelled(scene, contact, rocking_axis(scene));
+        return "no reference models it: " + winkler_unmodelled(scene, contact, rocking_axis_block(scene));
     if (contact.point_springs) return "no reference models it: the spring block carries dashpots by damping ratio, not by damping time";
     return "no reference models it: the engine's matched contact reproduces kn·A of a face (static "
            "penetration, frequency), not the springs along the hitting edge nor their loss at an impact";
@@ -256,7 +256,10 @@ std::vector<std::string> rocking_modes(const Scene& scene) {
 static const CaseKind& housner_kind() {
     static const FunctionKind k("housner", {"theta0", "axis_x", "axis_y", "axis_z", "impacts"}, analyse_rocking,
                                 rocking_curve, rocking_modes, "first impact",
-                                [](const Scene& s) { require_drive_modelled(s, "housner", {}); });
+                                [](const Scene& s) {
+                                    require_drive_modelled(s, "housner", {});
+                                    require_tilted_release(s, "housner");
+                                });
     return k;
 }
 

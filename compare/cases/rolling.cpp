@@ -1,9 +1,12 @@
 // case (d): a cube tumbling down a slope face after face; coarse oracles only (docs/validation.md)
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 
 #include "cases/case_util.hpp"
 #include "cases/case_kind.hpp"
+#include "error.hpp"
+#include "geometry/hexahedron.hpp"
 
 namespace cairn::cases {
 
@@ -100,10 +103,45 @@ CaseAnalysis analyse_rolling(const Scene& scene, const std::vector<Sample>& s, C
 }  // namespace
 
 // kind "rolling" (d): coarse oracles, no reference curve
+/// refuses a slope the oracle does not describe: its coarse checks follow the block down a plane
+/// falling toward +x (the top face of the first fixed block, of the reference's `slope`, 1e-3 rad)
+/// under gravity along −z
+static void check_rolling(const Scene& scene) {
+    require_drive_modelled(scene, "rolling", {false, true});
+    const std::string head = scene.source + ": reference.kind = \"rolling\": ";
+    if (scene.gravity.normalized().dot(-Vec3::UnitZ()) < std::cos(1e-3))
+        throw Error(head + "gravity is not along −z; the rolling reference models a slope falling toward +x under it");
+    for (const auto& b : scene.blocks) {
+        if (!b.fixed) continue;
+        // the face of the fixed block whose outward normal points most upward
+        Vec3 best = Vec3::Zero();
+        for (const auto& f : kFaceCorners) {
+            Vec3 c[4];
+            for (int k = 0; k < 4; ++k) c[k] = b.position + b.orientation * b.corners[size_t(f[size_t(k)])];
+            Vec3 n = (c[2] - c[0]).cross(c[3] - c[1]).normalized();
+            const Vec3 centre = b.position + b.orientation * mass_properties(b.corners, 1.0).centre;
+            if (n.dot(c[0] - centre) < 0) n = -n;   // outward
+            if (n.z() > best.z()) best = n;
+        }
+        const double slope = scene.reference->values.at("slope");
+        const Vec3 expected(std::sin(slope), 0.0, std::cos(slope));
+        if (std::acos(std::clamp(best.dot(expected), -1.0, 1.0)) > 1e-3) {
+            char why[300];
+            std::snprintf(why, sizeof why,
+                          "the top face of fixed block %s faces (%.4g, %.4g, %.4g), not a slope of %.5g rad falling "
+                          "toward +x; the rolling reference follows the block down such a plane",
+                          b.name.c_str(), best.x(), best.y(), best.z(), slope);
+            throw Error(head + why);
+        }
+        return;
+    }
+    throw Error(head + "no fixed block to roll down");
+}
+
 static const CaseKind& rolling_kind() {
     // the tumble starts from a small initial spin (the scene's perturbation)
     static const FunctionKind k("rolling", {"slope"}, analyse_rolling, nullptr, rigid_contact_only, "first face crossed",
-                                [](const Scene& s) { require_drive_modelled(s, "rolling", {false, true}); });
+                                check_rolling);
     return k;
 }
 

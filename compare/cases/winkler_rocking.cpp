@@ -19,12 +19,12 @@ namespace {
 
 /// the Winkler oracle of the reference block about the reference's rocking axis
 oracle::WinklerRocking winkler_block(const Scene& scene, ContactKind contact) {
-    return winkler_model(scene, contact, rocking_axis(scene));
+    return winkler_model(scene, contact, rocking_axis_block(scene));
 }
 
 /// why a variant has no reference here, or empty when the oracle models it
 std::string unmodelled(const Scene& scene, ContactKind contact) {
-    return winkler_unmodelled(scene, contact, rocking_axis(scene));
+    return winkler_unmodelled(scene, contact, rocking_axis_block(scene));
 }
 
 double release_tilt(const Scene& scene) { return scene.reference->values.at("theta0"); }
@@ -96,7 +96,10 @@ std::vector<std::string> rigid_beside(const Scene&) { return {"rigid"}; }
 static const CaseKind& winkler_kind() {
     static const FunctionKind k("winkler_rocking", {"theta0", "axis_x", "axis_y", "axis_z"}, analyse_winkler,
                                 winkler_curve, rigid_beside, "first impact",
-                                [](const Scene& s) { require_drive_modelled(s, "winkler_rocking", {}); });
+                                [](const Scene& s) {
+                                    require_drive_modelled(s, "winkler_rocking", {});
+                                    require_tilted_release(s, "winkler_rocking");
+                                });
     return k;
 }
 

@@ -10,6 +10,7 @@
 #include <set>
 
 #include "cases/case_kind.hpp"
+#include "cases/case_util.hpp"
 #include "error.hpp"
 #include "scene/reference_kinds.hpp"
 #include "scene/scene_io.hpp"
@@ -430,4 +431,47 @@ TEST_CASE("arch reference: a standing arch on dem's overlap contact is judged on
     CHECK(std::string(settlement(kind.analyse(s, fall, {false})).verdict()) == "miss");
     s.contact.scheme = ContactScheme::paper;
     CHECK(std::string(settlement(kind.analyse(s, fall, dem)).verdict()) == "miss");
+}
+
+TEST_CASE("rocking references: a block turned about the vertical rocks as it does unturned; a lean other than "
+          "theta0 is refused",
+          "[cases]") {
+    // the shipped rocking_housner block and its axis turned 30° about z (the whole release turned):
+    // the oracle's b and h, its first impact and the verdict of the same motion are unchanged.
+    // Before, the world axis was read in the block's frame: b came out as the block's extent
+    // along a 30° diagonal of its base, and the first impact 0.266 s instead of 0.6038 s
+    const Scene plain = shipped("paper/rocking_housner");
+    Scene turned = plain;
+    const Quat yaw(Eigen::AngleAxisd(M_PI / 6, Vec3::UnitZ()));
+    BlockDef& a = turned.blocks.at(size_t(turned.reference->block));
+    a.orientation = yaw * a.orientation;
+    a.position = yaw * a.position;
+    const Vec3 axis = yaw * Vec3::UnitY();
+    turned.reference->values["axis_x"] = axis.x();
+    turned.reference->values["axis_y"] = axis.y();
+    const auto& kind = cases::case_kind("housner", turned.source);
+    CHECK_NOTHROW(kind.check(turned));
+    const auto h0 = cases::housner_block(plain), h1 = cases::housner_block(turned);
+    CHECK(h1.b == Approx(h0.b).epsilon(1e-12));
+    CHECK(h1.h == Approx(h0.h).epsilon(1e-12));
+    CHECK(h0.b == Approx(0.1).epsilon(1e-12));
+    CHECK(h0.h == Approx(0.5).epsilon(1e-12));
+    // theta0 other than the block's lean, or the lean about another axis: refused
+    Scene off = turned;
+    off.reference->values["theta0"] = 0.12;
+    CHECK_THROWS_WITH(kind.check(off), Catch::Contains("leans 0.15792 rad"));
+    Scene askew = turned;
+    askew.reference->values["axis_x"] = 0.0;
+    askew.reference->values["axis_y"] = 1.0;
+    CHECK_THROWS_WITH(kind.check(askew), Catch::Contains("out of the plane across the axis"));
+    // the rolling oracle follows a slope falling toward +x: a slope value other than its plane's,
+    // or the plane turned about the vertical, is refused
+    Scene rolling = shipped("paper/rolling");
+    const auto& roll = cases::case_kind("rolling", rolling.source);
+    CHECK_NOTHROW(roll.check(rolling));
+    rolling.reference->values["slope"] = 0.6;
+    CHECK_THROWS_WITH(roll.check(rolling), Catch::Contains("not a slope of 0.6 rad falling toward +x"));
+    Scene spun = shipped("paper/rolling");
+    for (auto& b : spun.blocks) b.orientation = yaw * b.orientation, b.position = yaw * b.position;
+    CHECK_THROWS_WITH(roll.check(spun), Catch::Contains("falling toward +x"));
 }
