@@ -84,6 +84,13 @@ double angle_about_y(const Quat& q) {
     return std::atan2(r(0, 2), r(2, 2));
 }
 
+const metrics::Metric& find_metric(const cases::CaseAnalysis& a, const std::string& name) {
+    for (const auto& m : a.metrics)
+        if (m.name == name) return m;
+    FAIL("no metric " << name);
+    return a.metrics.front();
+}
+
 int check_judged(const cases::CaseAnalysis& a) {
     int judged = 0;
     for (const auto& m : a.metrics) {

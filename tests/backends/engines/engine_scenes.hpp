@@ -48,6 +48,9 @@ std::vector<Sample> sampled_run(const std::string& engine, const Scene& scene, c
 /// not); returns how many were judged
 int check_judged(const cases::CaseAnalysis& a);
 
+/// the metric of an analysis named `name` (fails the test when there is none)
+const metrics::Metric& find_metric(const cases::CaseAnalysis& a, const std::string& name);
+
 /// rotation angle about y of a rotation that is a pure y rotation, rad
 double angle_about_y(const Quat& q);
 

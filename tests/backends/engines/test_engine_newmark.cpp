@@ -93,9 +93,7 @@ TEST_CASE("every backend: a ground pulse at an angle to the block's sides slides
         CHECK(check_judged(a) == 2);
         return;
     }
-    for (const auto& m : a.metrics)
-        if (m.name == "final slide") {
-            CHECK(std::string(m.verdict()) == "miss");
-            CHECK(m.value / m.reference == Approx(1.109).margin(0.03));
-        }
+    const auto& slide = find_metric(a, "final slide");
+    CHECK(std::string(slide.verdict()) == "miss");
+    CHECK(slide.value / slide.reference == Approx(1.109).margin(0.03));
 }

@@ -10,18 +10,6 @@
 using namespace cairn;
 using namespace cairn::test;
 
-namespace {
-
-/// the judged or shown metric `name` of an analysis
-const metrics::Metric& metric(const cases::CaseAnalysis& a, const std::string& name) {
-    for (const auto& m : a.metrics)
-        if (m.name == name) return m;
-    FAIL("no metric " << name);
-    return a.metrics.front();
-}
-
-}  // namespace
-
 TEST_CASE("every backend: a cube pushed at its top by 0.45 W holds on the 15 % of its base still pressed",
           "[engines][stick]") {
     const std::string engine = GENERATE(from_range(all_backend_names()));
@@ -50,7 +38,7 @@ TEST_CASE("every backend: a cube pushed at its top by 0.45 W holds on the 15 % o
     s.reference = ReferenceDef{"stick", a, {{"force", H}}};
     const bool dem = engine == "dem";
     const auto r = cases::analyse_case(s, sampled_run(engine, s), {dem, dem});
-    const auto& held = metric(r, "slip while held");
+    const auto& held = find_metric(r, "slip while held");
     CAPTURE(held.value, held.basis);
     if (engine == "mujoco") {
         // MuJoCo's soft friction creeps at a steady 10 µm/s (measured 15.4 µm over the second
@@ -63,7 +51,7 @@ TEST_CASE("every backend: a cube pushed at its top by 0.45 W holds on the 15 % o
     }
     if (dem) {
         // the ramp is 1.4 periods of the rocking: the quasi-static base shear is shown, not judged
-        CHECK(std::string(metric(r, "base shear displacement").verdict()) == "info");
-        CHECK_THAT(metric(r, "base shear displacement").basis, Catch::Contains("not slow"));
+        CHECK(std::string(find_metric(r, "base shear displacement").verdict()) == "info");
+        CHECK_THAT(find_metric(r, "base shear displacement").basis, Catch::Contains("not slow"));
     }
 }
