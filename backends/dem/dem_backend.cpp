@@ -1,5 +1,6 @@
 #include "dem_backend.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <memory>
 #include <sstream>
@@ -25,6 +26,36 @@ bool may_slide(const Scene& scene) {
     return false;
 }
 
+/// the scene with its blocks in an order set by their geometry (their centres at t = 0, by z, then
+/// y, then x; the scene's order only between blocks centred at one point), the block indices of
+/// loads, probes and the reference renumbered; `to_scene[k]` is the scene index of block k. The
+/// engine sums forces and contacts in block order, so the scene's order (its blocks' names) would
+/// otherwise set the last bits of every sum, which rocking impacts grow into millimetres
+Scene canonical_order(const Scene& scene, std::vector<int>& to_scene) {
+    const size_t n = scene.blocks.size();
+    std::vector<Vec3> centre(n);
+    for (size_t i = 0; i < n; ++i) {
+        const BlockDef& b = scene.blocks[i];
+        centre[i] = b.position + b.orientation * mass_properties(b.corners, 1.0).centre;
+    }
+    to_scene.resize(n);
+    for (size_t i = 0; i < n; ++i) to_scene[i] = int(i);
+    std::stable_sort(to_scene.begin(), to_scene.end(), [&](int a, int b) {
+        const Vec3 &p = centre[size_t(a)], &q = centre[size_t(b)];
+        if (p.z() != q.z()) return p.z() < q.z();
+        if (p.y() != q.y()) return p.y() < q.y();
+        return p.x() < q.x();
+    });
+    std::vector<int> from_scene(n);
+    for (size_t k = 0; k < n; ++k) from_scene[size_t(to_scene[k])] = int(k);
+    Scene out = scene;
+    for (size_t k = 0; k < n; ++k) out.blocks[k] = scene.blocks[size_t(to_scene[k])];
+    for (auto& l : out.loads) l.block = from_scene[size_t(l.block)];
+    for (auto& p : out.probes) p.block = from_scene[size_t(p.block)];
+    if (out.reference) out.reference->block = from_scene[size_t(out.reference->block)];
+    return out;
+}
+
 class DemBackend : public Backend {
 public:
     std::string name() const override { return "dem"; }
@@ -38,7 +69,11 @@ public:
         double min_edge = 1e300;
         for (const auto& def : scene_.blocks) min_edge = std::min(min_edge, shortest_edge(def.corners));
         margin_ = scene_.run.contact_margin ? *scene_.run.contact_margin : 0.05 * min_edge;
-        world_ = std::make_unique<dem::World>(scene_, margin_);
+        world_.reset();
+        ordered_ = canonical_order(scene_, to_scene_);
+        from_scene_.assign(to_scene_.size(), 0);
+        for (size_t k = 0; k < to_scene_.size(); ++k) from_scene_[size_t(to_scene_[k])] = int(k);
+        world_ = std::make_unique<dem::World>(ordered_, margin_);
         world_->record_contacts(options.record_contacts);
         contact_critical_ = dem::contact_critical_step(world_->blocks(), scene_.contact, margin_);
         element_critical_ = dem::element_critical_step(world_->blocks());
@@ -74,7 +109,8 @@ public:
         s.t = world_->time();
         const auto& blocks = world_->blocks();
         for (size_t i = 0; i < scene_.probes.size(); ++i) s.probes.push_back(world_->probe(int(i)));
-        for (const auto& b : blocks) {
+        for (size_t i = 0; i < scene_.blocks.size(); ++i) {
+            const auto& b = blocks[size_t(from_scene_[i])];   // in the scene's order
             if (b.fixed) continue;
             BlockState st;
             st.position = b.body.x;
@@ -99,11 +135,18 @@ public:
 
     std::string failure() const override { return failure_; }
 
-    std::vector<ContactPoint> contact_points() const override { return world_->contact_points(); }
+    std::vector<ContactPoint> contact_points() const override {
+        auto points = world_->contact_points();
+        for (auto& p : points) {
+            if (p.block_a >= 0) p.block_a = to_scene_[size_t(p.block_a)];
+            if (p.block_b >= 0) p.block_b = to_scene_[size_t(p.block_b)];
+        }
+        return points;
+    }
 
     BlockMesh block_mesh(int block) const override {
         BlockMesh m;
-        const auto& b = world_->blocks()[size_t(block)];
+        const auto& b = world_->blocks()[size_t(from_scene_.at(size_t(block)))];
         if (!b.deformable) return m;
         m.nodes = b.x;
         m.velocities = b.v;
@@ -172,7 +215,10 @@ public:
     }
 
 private:
-    Scene scene_;
+    Scene scene_;                 ///< as given
+    Scene ordered_;               ///< its blocks in canonical_order, as the world holds them
+    std::vector<int> to_scene_;   ///< scene index of the world's block k
+    std::vector<int> from_scene_; ///< world index of the scene's block i
     std::unique_ptr<dem::World> world_;
     dem::SettleReport settle_;
     double dt_ = 0.0, critical_ = 0.0, contact_critical_ = 0.0, element_critical_ = 0.0, margin_ = 0.0;
