@@ -140,8 +140,10 @@ CaseAnalysis analyse_arch(const Scene& scene, const std::vector<Sample>& s, Cont
         r.metrics.push_back(info("crown settlement", "m", last, 0.0, hinged + "; " + settles));
         r.metrics.push_back(info("settlement in the second half", "m", last - first, 0.0, stops));
     } else {
-        r.metrics.push_back(at_most("crown settlement", "m", last, 0.0, 0.05 * t, settles + (hinged.empty() ? "" : "; " + hinged)));
-        r.metrics.push_back(at_most("settlement in the second half", "m", last - first, 0.0, 0.1 * std::abs(first) + 1e-4, stops));
+        const std::string basis = hinged.empty() ? settles : settles + "; " + hinged;
+        r.metrics.push_back(at_most("crown settlement", "m", last, 0.0, 0.05 * t, basis));
+        r.metrics.push_back(
+            at_most("settlement in the second half", "m", last - first, 0.0, 0.1 * std::abs(first) + 1e-4, stops));
     }
     // energy closed: the balance error against the energy of the motion (kinetic, contact and
     // strain at their largest, plus the potential exchanged)

@@ -181,9 +181,10 @@ metrics::Metric slip_while_held(const metrics::Series& s, double t0, double t1, 
                                 metrics::HeldDrift* held) {
     const auto d = metrics::held_drift(s, t0, t1, 0.25 * tol);
     if (held) *held = d;
-    if (d.resolved)
-        return metrics::absolute("slip while held", "m", d.drift, 0.0, tol,
-                                 "drift over " + std::string(d.ringing > 0.25 * tol ? "the lines through its turning points" : "a straight-line fit") + "; " + basis);
+    if (d.resolved) {
+        const std::string how = d.ringing > 0.25 * tol ? "the lines through its turning points" : "a straight-line fit";
+        return metrics::absolute("slip while held", "m", d.drift, 0.0, tol, "drift over " + how + "; " + basis);
+    }
     char why[200];
     std::snprintf(why, sizeof why,
                   "not judged: it rings by ±%.3g m with fewer than two swings in the window, so a drift cannot be "
