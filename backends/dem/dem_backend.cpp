@@ -28,10 +28,11 @@ bool may_slide(const Scene& scene) {
 
 /// the scene with its blocks in an order set by their geometry (their centres at t = 0, by z, then
 /// y, then x; the scene's order only between blocks centred at one point), the block indices of
-/// loads, probes and the reference renumbered; `to_scene[k]` is the scene index of block k. The
+/// loads, probes and the reference renumbered; `to_scene[k]` is the scene index of block k,
+/// `from_scene[i]` the index of the scene's block i. The
 /// engine sums forces and contacts in block order, so the scene's order (its blocks' names) would
 /// otherwise set the last bits of every sum, which rocking impacts grow into millimetres
-Scene canonical_order(const Scene& scene, std::vector<int>& to_scene) {
+Scene canonical_order(const Scene& scene, std::vector<int>& to_scene, std::vector<int>& from_scene) {
     const size_t n = scene.blocks.size();
     std::vector<Vec3> centre(n);
     for (size_t i = 0; i < n; ++i) {
@@ -46,7 +47,7 @@ Scene canonical_order(const Scene& scene, std::vector<int>& to_scene) {
         if (p.y() != q.y()) return p.y() < q.y();
         return p.x() < q.x();
     });
-    std::vector<int> from_scene(n);
+    from_scene.assign(n, 0);
     for (size_t k = 0; k < n; ++k) from_scene[size_t(to_scene[k])] = int(k);
     Scene out = scene;
     for (size_t k = 0; k < n; ++k) out.blocks[k] = scene.blocks[size_t(to_scene[k])];
@@ -70,9 +71,7 @@ public:
         for (const auto& def : scene_.blocks) min_edge = std::min(min_edge, shortest_edge(def.corners));
         margin_ = scene_.run.contact_margin ? *scene_.run.contact_margin : 0.05 * min_edge;
         world_.reset();
-        ordered_ = canonical_order(scene_, to_scene_);
-        from_scene_.assign(to_scene_.size(), 0);
-        for (size_t k = 0; k < to_scene_.size(); ++k) from_scene_[size_t(to_scene_[k])] = int(k);
+        ordered_ = canonical_order(scene_, to_scene_, from_scene_);
         world_ = std::make_unique<dem::World>(ordered_, margin_);
         world_->record_contacts(options.record_contacts);
         contact_critical_ = dem::contact_critical_step(world_->blocks(), scene_.contact, margin_);

@@ -1,6 +1,7 @@
 // an arch under its own weight: stands (its crown settles elastically and stops) or collapses
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 
 #include "analytic/block_interfaces.hpp"
 #include "analytic/block_limit_analysis.hpp"
@@ -22,10 +23,10 @@ namespace {
 /// stays 4.5 times below the least share that fell, the estimate being rough
 constexpr double kHingeShare = 0.15;
 
-/// whether a statically admissible state of the scene's blocks exists under gravity alone
-bool limit_analysis_stands(const Scene& scene) {
-    return oracle::collapse_multiplier(oracle::limit_blocks(scene), scene.gravity, Vec3::Zero(), scene.contact.friction)
-        .stands_at_zero;
+/// whether a statically admissible state of the blocks exists under gravity alone, their joints
+/// moved `inset` (m) inward from their edges
+bool stands_under_gravity(const Scene& scene, const std::vector<oracle::LimitBlock>& blocks, double inset = 0.0) {
+    return oracle::collapse_multiplier(blocks, scene.gravity, Vec3::Zero(), scene.contact.friction, inset).stands_at_zero;
 }
 
 /// how far the joints of a standing arch hinge on springs of modulus kn, against the room its
@@ -41,15 +42,12 @@ struct JointHinge {
     double drift = 0.0;      ///< θ·L, m
 };
 
-JointHinge joint_hinge(const Scene& scene, double thickness) {
-    const auto blocks = oracle::limit_blocks(scene);
+JointHinge joint_hinge(const Scene& scene, const std::vector<oracle::LimitBlock>& blocks, double thickness) {
     JointHinge h;
     double hi = 0.5 * thickness;
     for (int i = 0; i < 10; ++i) {
         const double mid = 0.5 * (h.margin + hi);
-        const bool stands = oracle::collapse_multiplier(blocks, scene.gravity, Vec3::Zero(), scene.contact.friction, mid)
-                                .stands_at_zero;
-        (stands ? h.margin : hi) = mid;
+        (stands_under_gravity(scene, blocks, mid) ? h.margin : hi) = mid;
     }
     std::vector<Corners> corners;
     std::vector<bool> fixed;
@@ -85,7 +83,8 @@ CaseAnalysis analyse_arch(const Scene& scene, const std::vector<Sample>& s, Cont
     if (!v.count("thickness")) throw Error(scene.source + ": an arch reference needs the value thickness (m)");
     const int crown = probe_index(scene, "crown");
     if (crown < 0) throw Error(scene.source + ": an arch reference needs a probe named crown");
-    const bool admissible = limit_analysis_stands(scene);
+    const auto blocks = oracle::limit_blocks(scene);
+    const bool admissible = stands_under_gravity(scene, blocks);
     const bool stands = v.count("stands") ? v.at("stands") != 0.0 : admissible;
     const double t = v.at("thickness");
     CaseAnalysis r;
@@ -117,26 +116,27 @@ CaseAnalysis analyse_arch(const Scene& scene, const std::vector<Sample>& s, Cont
     const std::string settles = "thicker than the limit-analysis minimum: a thrust line fits, only elastic closure of "
                                 "the joints; bound 5 % of the thickness";
     const std::string stops = "the settlement stops: at most a tenth of the first half's, plus 0.1 mm";
-    std::string hinged;
+    std::string hinged;   // how far the joints hinge, where dem's overlap contact is judged
+    bool judged = true;
     if (contact.penalty && contact.point_springs && scene.contact.scheme == ContactScheme::overlap) {
         // dem's overlap contact integrates kn over each joint: a joint whose thrust nears its edge
         // presses a short strip and turns, and the arch moves with it. Judged against the rigid
         // blocks only where that motion is small against the thrust line's margin
-        const JointHinge h = joint_hinge(scene, t);
+        const JointHinge h = joint_hinge(scene, blocks, t);
         char why[600];
         std::snprintf(why, sizeof why,
                       "the thrust line keeps s = %.3g m from the joints' edges; on springs of kn = %.3g N/m³ a joint "
-                      "whose thrust passes there turns by about 2N/(kn·D·(3s)²) = %.3g rad (N = %s), and the crown "
-                      "moves by about %.3g m",
-                      h.margin, scene.contact.kn, h.rotation, "half the arch's weight", h.drift);
-        if (!(h.drift <= kHingeShare * h.margin))
-            hinged = std::string("not judged: ") + why + ", more than " + fixed_text(100 * kHingeShare, 0) +
-                     " % of s: the joints' compliance decides whether it stands, which the rigid-block analysis "
-                     "leaves out (a stiffer kn brings it back)";
-        else
-            hinged = std::string(why) + ", within " + fixed_text(100 * kHingeShare, 0) + " % of s";
+                      "whose thrust passes there turns by about 2N/(kn·D·(3s)²) = %.3g rad (N = half the arch's "
+                      "weight), and the crown moves by about %.3g m",
+                      h.margin, scene.contact.kn, h.rotation, h.drift);
+        judged = h.drift <= kHingeShare * h.margin;
+        const std::string share = fixed_text(100 * kHingeShare, 0) + " % of s";
+        hinged = judged ? std::string(why) + ", within " + share
+                        : std::string("not judged: ") + why + ", more than " + share +
+                              ": the joints' compliance decides whether it stands, which the rigid-block analysis "
+                              "leaves out (a stiffer kn brings it back)";
     }
-    if (hinged.rfind("not judged", 0) == 0) {
+    if (!judged) {
         r.metrics.push_back(info("crown settlement", "m", last, 0.0, hinged + "; " + settles));
         r.metrics.push_back(info("settlement in the second half", "m", last - first, 0.0, stops));
     } else {

@@ -195,17 +195,16 @@ std::vector<double> friction_curve(const Scene& scene, ContactKind, const std::v
     return out;
 }
 
-/// the mean base displacement over [t0, T] against the Winkler block's quasi-static base shear,
-/// judged where that oracle holds: the load ramped slowly against the block's rocking and shear
-/// modes on its springs, the swings died out, and the contact zone spans three or more of the
-/// contact's shear springs along the push
-metrics::Metric base_shear_metric(const Scene& scene, const metrics::Series& u, double t0, double T,
-                                  const metrics::HeldDrift& held, ContactKind contact) {
+/// the mean base displacement over [t0, T] against the scene's Winkler block `wb` under its load
+/// at height h (m), whose quasi-static base shear is u_ref (m); judged where that oracle holds:
+/// the load ramped slowly against the block's rocking and shear modes on its springs, the swings
+/// died out, and the contact zone spans three or more of the contact's shear springs along the push
+metrics::Metric base_shear_metric(const Scene& scene, const oracle::WinklerBlock& wb, double h, double u_ref,
+                                  const metrics::Series& u, double t0, double T, const metrics::HeldDrift& held,
+                                  ContactKind contact) {
     using namespace metrics;
     const double H = scene.reference->values.at("force");
-    double h = 0.0;
-    const auto wb = winkler(scene, &h);
-    const double e = wb.eccentricity(H, h), u_ref = wb.shear_displacement(H, h), c = wb.contact_length(e);
+    const double e = wb.eccentricity(H, h), c = wb.contact_length(e);
     const double elastic = H / (scene.contact.ks * contact_area(scene)), mean = mean_value(u, t0, T);
     char why[600];
     if (e > wb.width / 6.0)
@@ -292,7 +291,8 @@ CaseAnalysis analyse_friction(const Scene& scene, const std::vector<Sample>& s, 
     r.measured = u;
     r.analytic = friction_curve(scene, {}, u.t);
     double h = 0.0;
-    const double u_ref = winkler(scene, &h).shear_displacement(H, h);
+    const auto wb = winkler(scene, &h);
+    const double u_ref = wb.shear_displacement(H, h);
     const double elastic = H / (scene.contact.ks * contact_area(scene));
     r.analytic_label = "quasi-static base shear of a rigid block on a Winkler base (slip where μ·p < ks·u)";
     r.analytic_key = "Winkler block";
@@ -309,7 +309,7 @@ CaseAnalysis analyse_friction(const Scene& scene, const std::vector<Sample>& s, 
                                         "the second half after the ramp; 5 % of the quasi-static base shear " +
                                             std::to_string(scale) + " m",
                                         &held));
-    if (contact.penalty) r.metrics.push_back(base_shear_metric(scene, u, t0, T, held, contact));
+    if (contact.penalty) r.metrics.push_back(base_shear_metric(scene, wb, h, u_ref, u, t0, T, held, contact));
     return r;
 }
 

@@ -246,39 +246,34 @@ CaseAnalysis analyse_pushover(const Scene& scene, const std::vector<Sample>& s, 
     const double lambda_ref = winkler ? lambda_winkler : lambda_rigid;
     const std::string basis = winkler ? winkler_basis : rigid_basis + "; 2 %";
     auto up = crossings(r.measured, threshold, Crossing::up);
+    if (!up.empty()) r.event_time = up.front(), r.has_event = true;
+    double largest = 0.0;
+    for (double y : r.measured.y) largest = std::max(largest, std::abs(y));
+    const std::string largest_name = "largest rotation of " + scene.blocks[scene.reference->block].name;
     // the Winkler continuation found no peak, or ends before the threshold: no reference
-    const bool path_lost = winkler && (std::isnan(peak) || threshold >= oracle::BlockStack::kWinklerPathEnd);
-    if (path_lost) {
-        double largest = 0.0;
-        for (double y : r.measured.y) largest = std::max(largest, std::abs(y));
-        if (!up.empty()) r.event_time = up.front(), r.has_event = true;
-        r.metrics.push_back(info(up.empty() ? "largest rotation of " + scene.blocks[scene.reference->block].name : name,
-                                 up.empty() ? "rad" : "", up.empty() ? largest : ground_multiplier(scene, up.front()),
-                                 up.empty() ? threshold : lambda_rigid,
-                                 "not judged: the Winkler stack's path found no peak before the threshold (its "
-                                 "continuation lost, or the threshold past its end); against the " + rigid_basis));
+    if (winkler && (std::isnan(peak) || threshold >= oracle::BlockStack::kWinklerPathEnd)) {
+        const std::string why = "not judged: the Winkler stack's path found no peak before the threshold (its "
+                                "continuation lost, or the threshold past its end); against the " + rigid_basis;
+        if (up.empty())
+            r.metrics.push_back(info(largest_name, "rad", largest, threshold, why));
+        else
+            r.metrics.push_back(info(name, "", ground_multiplier(scene, up.front()), lambda_rigid, why));
         return r;
     }
     if (std::isnan(lambda_ref)) {
         // the reference does not turn that far within the run: neither may the stack
-        double largest = 0.0, record = 0.0;
-        for (size_t i = 0; i < r.measured.t.size(); ++i)
-            largest = std::max(largest, std::abs(r.measured.y[i])),
-            record = std::max(record, std::abs(ground_multiplier(scene, r.measured.t[i])));
-        r.metrics.push_back(at_most("largest rotation of " + scene.blocks[scene.reference->block].name, "rad", largest,
-                                    threshold, 0.0,
+        double record = 0.0;
+        for (double t : r.measured.t) record = std::max(record, std::abs(ground_multiplier(scene, t)));
+        r.metrics.push_back(at_most(largest_name, "rad", largest, threshold, 0.0,
                                     (winkler ? winkler_basis : rigid_basis) + ": under the record's largest a/g " +
                                         fixed4(record) + " it does not turn " + fixed4(threshold) +
                                         " rad within the run"));
-        if (!up.empty()) r.event_time = up.front(), r.has_event = true;
         return r;
     }
     if (up.empty()) {
         r.metrics.push_back(missing(name, "", lambda_ref, 0.02, Check::relative, basis + " (never turned that far)"));
         return r;
     }
-    r.event_time = up.front();
-    r.has_event = true;
     const double lambda = ground_multiplier(scene, up.front());
     r.metrics.push_back(relative(name, "", lambda, lambda_ref, 0.02, basis));
     if (winkler)

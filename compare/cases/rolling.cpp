@@ -7,6 +7,7 @@
 #include "cases/case_kind.hpp"
 #include "error.hpp"
 #include "geometry/hexahedron.hpp"
+#include "geometry/overlap.hpp"
 
 namespace cairn::cases {
 
@@ -102,7 +103,6 @@ CaseAnalysis analyse_rolling(const Scene& scene, const std::vector<Sample>& s, C
 
 }  // namespace
 
-// kind "rolling" (d): coarse oracles, no reference curve
 /// refuses a slope the oracle does not describe: its coarse checks follow the block down a plane
 /// falling toward +x (the top face of the first fixed block, of the reference's `slope`, 1e-3 rad)
 /// under gravity along −z
@@ -114,13 +114,13 @@ static void check_rolling(const Scene& scene) {
     for (const auto& b : scene.blocks) {
         if (!b.fixed) continue;
         // the face of the fixed block whose outward normal points most upward
+        const Corners w = placed_corners(b.corners, b.position, b.orientation);
+        const Vec3 centre = mass_properties(w, 1.0).centre;
         Vec3 best = Vec3::Zero();
         for (const auto& f : kFaceCorners) {
-            Vec3 c[4];
-            for (int k = 0; k < 4; ++k) c[k] = b.position + b.orientation * b.corners[size_t(f[size_t(k)])];
-            Vec3 n = (c[2] - c[0]).cross(c[3] - c[1]).normalized();
-            const Vec3 centre = b.position + b.orientation * mass_properties(b.corners, 1.0).centre;
-            if (n.dot(c[0] - centre) < 0) n = -n;   // outward
+            const Vec3 &c0 = w[size_t(f[0])], &c1 = w[size_t(f[1])], &c2 = w[size_t(f[2])], &c3 = w[size_t(f[3])];
+            Vec3 n = (c2 - c0).cross(c3 - c1).normalized();
+            if (n.dot(c0 - centre) < 0) n = -n;   // outward
             if (n.z() > best.z()) best = n;
         }
         const double slope = scene.reference->values.at("slope");
@@ -138,6 +138,7 @@ static void check_rolling(const Scene& scene) {
     throw Error(head + "no fixed block to roll down");
 }
 
+// kind "rolling" (d): coarse oracles, no reference curve
 static const CaseKind& rolling_kind() {
     // the tumble starts from a small initial spin (the scene's perturbation)
     static const FunctionKind k("rolling", {"slope"}, analyse_rolling, nullptr, rigid_contact_only, "first face crossed",
