@@ -45,6 +45,8 @@ void ContactSet::refresh(std::vector<Block>& blocks) {
         for (size_t i = 0; i < blocks.size(); ++i) frames_[i] = SideFrames::of(blocks[i]);
     }
     PairGeometry g;
+    slots_.clear();
+    widened_.assign(prune ? blocks.size() : 0, 0);
     for (auto [i, j] : pairs_) {
         if (blocks[i].fixed && blocks[j].fixed) continue;
         for (auto [h, t] : {std::pair<int, int>{i, j}, std::pair<int, int>{j, i}}) {
@@ -53,7 +55,11 @@ void ContactSet::refresh(std::vector<Block>& blocks) {
                 for (int n : blocks[h].mesh.faces[f]) fb.add(blocks[h].x[n]);
                 fb.inflate(0.5 * margin_);
                 if (!fb.overlaps(boxes_[t])) continue;
-                if (prune && !may_act(blocks, frames_, h, f, t, margin_, g)) continue;
+                if (prune) {
+                    const bool acts = may_act(blocks, frames_, h, f, t, margin_, g);
+                    slots_.push_back({h, f, t, acts});
+                    if (!acts) continue;
+                }
                 Candidate c;
                 c.hit_block = h;
                 c.hit_face = f;
@@ -71,6 +77,30 @@ void ContactSet::refresh(std::vector<Block>& blocks) {
             }
         }
     }
+}
+
+void ContactSet::widen(const std::vector<char>& turned) {
+    bool any = false;
+    for (size_t i = 0; i < widened_.size() && i < turned.size(); ++i)
+        if (turned[i] && !widened_[i]) widened_[i] = 1, any = true;
+    if (!any) return;
+    // the active slots are the candidates, in the same order
+    spare_.clear();
+    size_t k = 0;
+    for (Slot& s : slots_) {
+        if (s.active) {
+            spare_.push_back(std::move(candidates_[k++]));
+            continue;
+        }
+        if (!widened_[size_t(s.hit_block)] && !widened_[size_t(s.target_block)]) continue;
+        s.active = true;
+        Candidate c;
+        c.hit_block = s.hit_block;
+        c.hit_face = s.hit_face;
+        c.target_block = s.target_block;
+        spare_.push_back(std::move(c));
+    }
+    candidates_.swap(spare_);
 }
 
 ContactTotals ContactSet::apply(std::vector<Block>& blocks, double dt) {

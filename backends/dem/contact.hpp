@@ -146,6 +146,13 @@ public:
     /// overlap scheme: leave out at each refresh the faces that cannot reach their target before
     /// the next (on by default; off: every face whose box meets the target's, for comparison)
     void prune(bool on) { prune_ = on; }
+    /// overlap scheme with pruning: the blocks flagged in `turned` (one flag per block) are about
+    /// to turn past kRefreshTurn since the last refresh. Every face of their pairs that the refresh
+    /// left out is made a candidate again, in its place in the refresh's order (the order without
+    /// pruning), so that they may turn freely until the next refresh; the other pairs stay pruned
+    void widen(const std::vector<char>& turned);
+    /// true when block i's pairs are no longer pruned (widen) until the next refresh
+    bool widened(size_t i) const { return i < widened_.size() && widened_[i] != 0; }
     /// false: no shear spring slips, whatever its normal force (the settling before t = 0
     /// finds the springs' elastic static state, which does not depend on the path); default true
     void allow_slip(bool on) { slip_ = on; }
@@ -171,6 +178,16 @@ private:
     std::vector<Aabb> boxes_;
     BroadPhase broad_;
     std::vector<std::pair<int, int>> pairs_;
+    // overlap scheme with pruning: every face whose box met its target's at the last refresh, in
+    // the refresh's order, and whether it is a candidate now; per block, whether widen lifted its
+    // pruning
+    struct Slot {
+        int hit_block = 0, hit_face = 0, target_block = 0;
+        bool active = false;
+    };
+    std::vector<Slot> slots_;
+    std::vector<char> widened_;
+    std::vector<Candidate> spare_;   // widen's scratch
 };
 
 /// true when side `target_side` of block t is the target of side `hit_side` of block h: the

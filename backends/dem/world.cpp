@@ -118,13 +118,14 @@ void World::refresh_if_due() {
     const bool turns = prune_ && scene_.contact.scheme == ContactScheme::overlap;
     bool early = false, turned = false;
     double fastest = 0.0;   // the largest move of a block in this step, m
+    turned_.assign(blocks_.size(), 0);
 #pragma omp parallel for schedule(static) reduction(|| : early, turned) reduction(max : fastest) if (count >= kParallelBlocks)
     for (long i = 0; i < count; ++i) {
         const Block& b = blocks_[size_t(i)];
         if (b.fixed) continue;
         // the check runs before this step's move: add a bound on it (speed × dt); the overlap
-        // scheme also refreshes before a block turns by kRefreshTurn (the refresh leaves out the
-        // sides that cannot face each other within that turn)
+        // scheme also widens the candidates of a block before it turns by kRefreshTurn (the
+        // refresh leaves out the sides that cannot face each other within that turn)
         const double spin = b.deformable ? 0.0 : b.body.omega().norm();   // rad/s
         double speed = 0.0;   // m/s, of the block's fastest point
         if (b.deformable)
@@ -137,11 +138,17 @@ void World::refresh_if_due() {
         // a bound on how far any point moved since the refresh, m
         const double moved = (b.body.x - b.x_at_refresh).norm() + b.r_max * turn;
         if (moved + move > half) early = true;
-        if (turns && turn + spin * dt_ > kRefreshTurn) turned = true;
+        if (turns && !contacts_.widened(size_t(i)) && turn + spin * dt_ > kRefreshTurn) turned = true, turned_[size_t(i)] = 1;
     }
     const bool due = steps_since_refresh_ >= scene_.run.contact_interval;
     if (early && !due) ++early_refreshes_;   // counted: a margin too small for the motion
-    if (!(due || early || turned)) return;
+    if (!(due || early)) {
+        // a block about to turn past the pruning's bound: its pairs' left-out faces come back
+        // until the next refresh (a whole refresh each step would cost more than the faces: one
+        // tumbling brick in a wall refreshed all of its 300 bricks every 2 to 3 steps)
+        if (turned) contacts_.widen(turned_);
+        return;
+    }
     // a block that moves more than half the scene's margin in one step would cross it before the
     // next check: the boxes grow by four of its steps' move until it slows down
     contacts_.set_margin(2.0 * fastest > margin_ ? 4.0 * fastest : margin_);

@@ -75,14 +75,14 @@ public:
     /// keep per-point contact forces for contact_points(); call before start()
     void record_contacts(bool on) { contacts_.keep_forces(on); }
     /// overlap scheme: leave out the faces that cannot reach their target before the next refresh,
-    /// refreshing also before a block turns by kRefreshTurn (default on; off: every face whose
+    /// bringing a block's back before it turns by kRefreshTurn (default on; off: every face whose
     /// box meets the target's, refreshed on motion alone), candidates rebuilt; call before start()
     void prune_contacts(bool on) {
         prune_ = on;
         contacts_.prune(on);
         contacts_.refresh(blocks_);
     }
-    /// candidate hitting faces of the last refresh
+    /// candidate hitting faces now (those of the last refresh, and any widen brought back)
     size_t candidate_count() const { return contacts_.candidates().size(); }
     /// penetrating hitting points of the last force evaluation with their forces (empty unless
     /// record_contacts(true)); block_a is the hitting block, the normal that of the target face
@@ -132,6 +132,7 @@ private:
     ContactTotals last_contact_;
     std::vector<Vec3> force_, torque_;          // rigid blocks: resultant of the current step
     std::vector<double> loss_;                  // per block: mass-damping loss of the last kick, J
+    std::vector<char> turned_;                  // per block: about to turn past kRefreshTurn (refresh_if_due)
     std::vector<std::vector<Vec3>> accel_;      // deformable blocks: nodal accelerations
     // contact events (a point entering or leaving inside the step): the end-of-step half kick's
     // forces of the blocks they touch
