@@ -47,6 +47,25 @@ struct OdeFault : std::runtime_error {
     throw OdeFault("ODE internal error " + std::to_string(errnum) + ": " + text);
 }
 
+// ODE's messages are warnings it carries on from (its direct solver's "LCP internal error": the
+// step's LCP was not solved). Printed to stderr by default, where a report never shows them; the
+// stepping backend (one per thread at a time) counts them instead and reports them in its notes
+struct OdeMessages {
+    long count = 0;
+    std::string first;   // the first message's text
+};
+thread_local OdeMessages* stepping_messages = nullptr;
+
+void count_ode_message(int errnum, const char* msg, va_list ap) {
+    char text[512];
+    std::vsnprintf(text, sizeof text, msg, ap);
+    if (!stepping_messages) {
+        std::fprintf(stderr, "ODE message %d: %s\n", errnum, text);   // outside a step: as ODE prints it
+        return;
+    }
+    if (stepping_messages->count++ == 0) stepping_messages->first = "ODE message " + std::to_string(errnum) + ": " + text;
+}
+
 class OdeBackend : public Backend {
 public:
     OdeBackend() {
@@ -54,6 +73,7 @@ public:
             dInitODE2(0);
             dSetErrorHandler(&throw_ode_fault);
             dSetDebugHandler(&throw_ode_fault);
+            dSetMessageHandler(&count_ode_message);
             return true;
         }();
         (void)initialised;
@@ -69,7 +89,7 @@ public:
     StepStatus step() override;
     Sample sample() const override;
     std::string failure() const override { return failure_; }
-    std::vector<std::string> notes() const override { return notes_; }
+    std::vector<std::string> notes() const override;
     std::vector<ContactPoint> contact_points() const override;
 
 private:
@@ -109,6 +129,7 @@ private:
     Sample frozen_;          // the last state before the fault
     std::string failure_;
     std::vector<std::string> notes_;
+    OdeMessages messages_;   // ODE's messages since the build
 };
 
 void OdeBackend::clear() {
@@ -151,6 +172,7 @@ void OdeBackend::build(const Scene& scene, const RunOptions& options) {
     clear();
     scene_ = scene;
     notes_.clear();
+    messages_ = OdeMessages{};
     failure_.clear();
     faulted_ = false;
     t_ = external_work_ = contact_energy_ = 0.0;
@@ -405,6 +427,17 @@ void OdeBackend::abandon_world() {
     faulted_ = true;
 }
 
+std::vector<std::string> OdeBackend::notes() const {
+    std::vector<std::string> n = notes_;
+    if (messages_.count > 0)
+        n.push_back("warning: ODE reported " + std::to_string(messages_.count) + " message(s) while stepping (first: " +
+                    messages_.first + "). \"LCP internal error\" is dWorldStep's direct solver failing on a step: "
+                    "with many redundant frictional contacts it can return forces that let a structure fall (a "
+                    "25-voussoir arch falls on dWorldStep at cfm 1e-10 and stands at cfm 1e-6 or on QuickStep; "
+                    "docs/backends.md)");
+    return n;
+}
+
 StepStatus OdeBackend::step() {
     if (faulted_) return StepStatus::unstable;
     // loads at their material points (ODE clears accumulated forces after each step)
@@ -419,11 +452,14 @@ StepStatus OdeBackend::step() {
     contact_count_ = 0;
     recorded_.clear();
     feedback_.clear();
+    stepping_messages = &messages_;
     try {
         dSpaceCollide(space_, this, &OdeBackend::near_callback);
         if (quickstep_) dWorldQuickStep(world_, dt_);
         else dWorldStep(world_, dt_);
+        stepping_messages = nullptr;
     } catch (const OdeFault& e) {
+        stepping_messages = nullptr;
         failure_ = std::string(e.what()) + " at t = " + std::to_string(t_) + " s";
         abandon_world();
         return StepStatus::unstable;
