@@ -92,7 +92,8 @@ void whole_step_free(benchmark::State& state) { steps(state, false); }
 // the paper's grid (sub 0: its default 0.1 m spacing) or the overlap scheme with sub×sub
 // sub-contacts per hitting face: the cost of contact at the same kn. The wall is not at rest
 // (the top course is shifted whole by half a brick: its end brick, its centre over the edge of the
-// course below, tips): each repetition steps the same kWallSteps from the same start, so both schemes time the same motion
+// course below, tips): each repetition steps the same kWallSteps from the same start, so both
+// schemes time the same motion
 constexpr int kWallSteps = 2000;   // 0.2 s of the wall's motion at dt = 1e-4 s
 
 void wall_step(benchmark::State& state) {

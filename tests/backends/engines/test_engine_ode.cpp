@@ -61,7 +61,8 @@ TEST_CASE("ode: dWorldStep drops a 25-voussoir arch that QuickStep and a softer 
         return z0 - b->sample().blocks[size_t(crown)].position.z();
     };
     auto warned = [](const std::vector<std::string>& notes) {
-        return std::any_of(notes.begin(), notes.end(), [](const std::string& n) { return n.find("LCP internal error") != std::string::npos; });
+        return std::any_of(notes.begin(), notes.end(),
+                           [](const std::string& n) { return n.find("LCP internal error") != std::string::npos; });
     };
     std::vector<std::string> step_notes, soft_notes, quick_notes;
     const double step_drop = drop("step", 1e-10, step_notes), soft_drop = drop("step", 1e-6, soft_notes),
