@@ -342,32 +342,51 @@ void ContactSet::evaluate_overlap(std::vector<Block>& blocks, double dt, long be
                             // face's edge, another side's plane) with depth, U changes as the
                             // face moves over it: the boundary term of the gradient, on both blocks
                             // at the edge's hitting points (the cell's own edges move with it, and
-                            // d = 0 on the depth cut). Rigid hitting faces only, as the tilt couple:
-                            // on a deformable block's triangles the two made structures/arch_thin
-                            // (corrected or consistent mass) blow up as it collapses (an element
-                            // turned inside out at 0.53 s), and its balance closes without them
-                            const ClipPolygon& cell_poly = polys[0];   // a rigid face's cell, clipped whole
+                            // d = 0 on the depth cut). On a deformable hitting face, per triangle
+                            // (d is affine over each), spread on the face's nodes by the point's
+                            // barycentric weights in its triangle: without it a brick landing across
+                            // the edge of a smaller block lost a tenth of its energy unbooked
                             anchor->edged = false;
-                            for (int i = 0; i < (split ? 0 : cell_poly.n); ++i) {
-                                const int k = int(cell_poly.by[size_t(i)]) - 1;
-                                if (k < 0 || k == side_count) continue;
-                                const EdgeForce e = edge_force(cell_poly, i, ct, nt, cons[size_t(k)], in.slope, law_.kn);
-                                if (e.force.isZero(0.0)) continue;
-                                anchor->edged = true;
-                                const NodeWeights eh = node_weights(hb, c.hit_face, e.point), et = node_weights(tb, tf, e.point);
-                                const SubForce edge{eh, et, e.force, nt, eh, et};
-                                if (keep_forces) c.sub_forces.push_back(edge);
-                                else edge.spread(hb, tb);
-                                // a closer constraint capped at the face's reach behind o moves
-                                // with the face's deepest corner p along −n_o: U's gradient there
-                                // is dU/db·(−n_o), a pair at p (the reach is o's plane to p,
-                                // unchanged by a motion of both blocks)
-                                if (k < side_count && caps[size_t(k)].corner >= 0) {
-                                    const Vec3& p = hq[size_t(caps[size_t(k)].corner)];
-                                    const NodeWeights ch = node_weights(hb, c.hit_face, p), ctw = node_weights(tb, tf, p);
-                                    const SubForce cap{ch, ctw, e.offset_gradient * g.normal[size_t(caps[size_t(k)].side)], nt, ch, ctw};
-                                    if (keep_forces) c.sub_forces.push_back(cap);
-                                    else cap.spread(hb, tb);
+                            for (int k = 0; k < parts; ++k) {
+                                const ClipPolygon& poly = polys[size_t(k)];
+                                const Vec3 slope = split ? part[size_t(k)].slope : in.slope;
+                                for (int i = 0; i < poly.n; ++i) {
+                                    const int cut = int(poly.by[size_t(i)]) - 1;
+                                    if (cut < 0 || cut == side_count) continue;
+                                    const EdgeForce e = edge_force(poly, i, ct, nt, cons[size_t(cut)], slope, law_.kn);
+                                    if (e.force.isZero(0.0)) continue;
+                                    anchor->edged = true;
+                                    NodeWeights eh;
+                                    if (!split) eh = node_weights(hb, c.hit_face, e.point);
+                                    else {
+                                        const std::array<Vec2, 3> txi = {corner_xi(k), corner_xi((k + 1) % 4), centre_xi};
+                                        const Vec3& x0 = grid[size_t(corner[size_t(k)])];
+                                        const Vec3& x1 = grid[size_t(corner[size_t((k + 1) % 4)])];
+                                        const Vec3 tn = (x1 - x0).cross(centre_p - x0).normalized();
+                                        const auto l = barycentric(e.point, x0, x1, centre_p, tn);
+                                        std::array<double, 4> w{};
+                                        for (int j = 0; j < 3; ++j) {
+                                            const auto nw = quad_weights(txi[size_t(j)]);
+                                            for (int a = 0; a < 4; ++a) w[size_t(a)] += l[size_t(j)] * nw[size_t(a)];
+                                        }
+                                        eh.count = 4;
+                                        for (int a = 0; a < 4; ++a) eh.node[size_t(a)] = hb.mesh.faces[c.hit_face][size_t(a)], eh.w[size_t(a)] = w[size_t(a)];
+                                    }
+                                    const NodeWeights et = tb.deformable ? plane_weights(tq, tb.mesh.faces[tf], ct, nt, e.point) : node_weights(tb, tf, e.point);
+                                    const SubForce edge{eh, et, e.force, nt, eh, et};
+                                    if (keep_forces) c.sub_forces.push_back(edge);
+                                    else edge.spread(hb, tb);
+                                    // a closer constraint capped at the face's reach behind o moves
+                                    // with the face's deepest corner p along −n_o: U's gradient there
+                                    // is dU/db·(−n_o), a pair at p (the reach is o's plane to p,
+                                    // unchanged by a motion of both blocks)
+                                    if (cut < side_count && caps[size_t(cut)].corner >= 0) {
+                                        const Vec3& cp = hq[size_t(caps[size_t(cut)].corner)];
+                                        const NodeWeights ch = node_weights(hb, c.hit_face, cp), ctw = node_weights(tb, tf, cp);
+                                        const SubForce cap{ch, ctw, e.offset_gradient * g.normal[size_t(caps[size_t(cut)].side)], nt, ch, ctw};
+                                        if (keep_forces) c.sub_forces.push_back(cap);
+                                        else cap.spread(hb, tb);
+                                    }
                                 }
                             }
                             // a face pulling away faster than its springs relax: the dashpot

@@ -15,6 +15,7 @@
 #include "engine_settings.hpp"
 #include "error.hpp"
 #include "hexahedron_contact.hpp"
+#include "output/number_format.hpp"
 #include "rigid_blocks.hpp"
 #include "rigid_sample.hpp"
 
@@ -53,6 +54,7 @@ struct OdeFault : std::runtime_error {
 struct OdeMessages {
     long count = 0;
     std::string first;   // the first message's text
+    double first_time = 0.0;   // s, the start of the step that raised it
 };
 thread_local OdeMessages* stepping_messages = nullptr;
 
@@ -430,8 +432,8 @@ void OdeBackend::abandon_world() {
 std::vector<std::string> OdeBackend::notes() const {
     std::vector<std::string> n = notes_;
     if (messages_.count > 0)
-        n.push_back("warning: ODE reported " + std::to_string(messages_.count) + " message(s) while stepping (first: " +
-                    messages_.first + "). \"LCP internal error\" is dWorldStep's direct solver failing on a step: "
+        n.push_back("warning: ODE reported " + std::to_string(messages_.count) + " message(s) while stepping (first at t = " +
+                    number_format("%.6g", messages_.first_time) + " s: " + messages_.first + "). \"LCP internal error\" is dWorldStep's direct solver failing on a step: "
                     "with many redundant frictional contacts it can return forces that let a structure fall (a "
                     "25-voussoir arch falls on dWorldStep at cfm 1e-10 and stands at cfm 1e-6 or on QuickStep; "
                     "docs/backends.md)");
@@ -453,6 +455,7 @@ StepStatus OdeBackend::step() {
     recorded_.clear();
     feedback_.clear();
     stepping_messages = &messages_;
+    const long messages_before = messages_.count;
     try {
         dSpaceCollide(space_, this, &OdeBackend::near_callback);
         if (quickstep_) dWorldQuickStep(world_, dt_);
@@ -465,6 +468,7 @@ StepStatus OdeBackend::step() {
         return StepStatus::unstable;
     }
     dJointGroupEmpty(contacts_);
+    if (messages_before == 0 && messages_.count > 0) messages_.first_time = t_;
     t_ += dt_;
     if (scene_.damping.alpha > 0) {
         const double k = std::exp(-scene_.damping.alpha * dt_);

@@ -364,8 +364,8 @@ TEST_CASE("a brick hanging over the edge of its base is pushed by its bottom onl
     // that side. The sliver entered through the top, 1.7 mm away: measured from the side it made a
     // horizontal force as large as the weight it carried (kn·0.4·d·0.109) and, on a deformable
     // brick falling off a wall under El Centro, 8 kJ from nowhere. The bottom alone carries
-    // kn·d over its 0.4 × 0.109 m² over the base; a rigid brick also takes the edge force
-    // ½kn·d²·0.4 along −y where that region ends on the base's edge (docs/dem.md).
+    // kn·d over its 0.4 × 0.109 m² over the base, and the edge force ½kn·d²·0.4 along −y where
+    // that region ends on the base's edge (docs/dem.md), rigid or deformable alike.
     const double kn = 1e9, d = 1.7e-3, inside = 0.109, length = 0.4;
     for (const BlockModel model : {BlockModel::rigid, BlockModel::deformable}) {
         Scene s = overlap_scene();
@@ -380,7 +380,7 @@ TEST_CASE("a brick hanging over the edge of its base is pushed by its bottom onl
         // shortest edge (0.5 m), as a whole side's face does
         const double carried = kn * d * length * (inside + 1e-4 * 0.5);
         CHECK(f.z() == Approx(carried).epsilon(1e-6));
-        const double edge = model == BlockModel::rigid ? -0.5 * kn * d * d * length : 0.0;   // −578 N
+        const double edge = -0.5 * kn * d * d * length;   // −578 N
         CHECK(f.y() == Approx(edge).margin(1e-6 * carried));
         CHECK(std::abs(f.x()) < 1e-6 * carried);
     }

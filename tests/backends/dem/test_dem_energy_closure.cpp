@@ -43,6 +43,31 @@ void check_closes(const std::vector<std::string>& scenes, const std::vector<std:
         }
 }
 
+// a 0.4 x 0.2 x 0.2 m brick tilted 0.3 rad about (1, 1, 0), thrown down at 7 m/s (and 1 m/s along
+// x) onto a fixed brick of its own size: its corner and edges land across the fixed brick's edges
+Scene brick_on_edge(const std::string& model) {
+    Scene s = parse_scene(
+        "[run]\nduration = 0.03\noutput_interval = 0.0001\n"
+        "[materials.stone]\ndensity = 2600\nyoung = 30e9\npoisson = 0.2\n"
+        "[contact]\nkn = 1e9\nfriction = 0.7\ndamping_ratio = 0.1\n"
+        "[blocks.A]\nsize = [0.4, 0.2, 0.2]\nposition = [0, 0, 0.4]\n"
+        "orientation = {axis = [1, 1, 0], angle = 0.3}\nvelocity = [1, 0, -7]\nmaterial = \"stone\"\n"
+        "[blocks.A.mesh]\ndivisions = [2, 1, 1]\n"
+        "[blocks.C]\nsize = [0.4, 0.2, 0.2]\nposition = [0, 0, 0.1]\nmaterial = \"stone\"\nfixed = true\n",
+        "<brick on an edge>");
+    apply_model(s, model);
+    return s;
+}
+
+// the kinetic energy of the last sample at or before t_max, J
+struct KineticAt : SampleSink {
+    double t_max, kinetic = 0.0;
+    explicit KineticAt(double t) : t_max(t) {}
+    void sample(const Sample& x) override {
+        if (x.t <= t_max) kinetic = x.energy.kinetic;
+    }
+};
+
 }  // namespace
 
 TEST_CASE("rigid blocks close the energy balance of the paper's scenes at the default step", "[dem][energy]") {
@@ -162,4 +187,25 @@ TEST_CASE("the step's kinetic energy closes the balance of a block settling on l
         INFO(scheme << " scheme: max balance error " << e << " of the motion energy");
         CHECK(e < 1e-9);
     }
+}
+
+TEST_CASE("a brick landing across the edges of another closes its energy balance, rigid and deformable", "[dem][energy]") {
+    // the overlap of its faces ends on the fixed brick's edges with depth: the boundary term of
+    // the energy's gradient. Left out on deformable faces, 7.4 % of the motion energy vanished
+    // unbooked (measured max 7.9 %, and the brick bounced off with 4 % more kinetic energy)
+    double kinetic[2] = {0.0, 0.0};
+    int i = 0;
+    for (const std::string model : {"rigid", "deformable"}) {
+        const Scene s = brick_on_edge(model);
+        auto backend = dem_backend_info().make();
+        KineticAt sink(0.0175);   // s: between the first impact (0.007-0.016 s) and the second (from 0.019 s)
+        const RunResult r = run_scene(*backend, s, RunOptions{}, sink);
+        REQUIRE(r.status == RunStatus::completed);
+        INFO(model << ": max balance error " << r.max_balance_error << " of the motion energy");
+        CHECK(r.max_balance_error < kClosure);
+        kinetic[i++] = sink.kinetic;
+    }
+    // the stone's compliance (E = 30 GPa against kn = 1e9 N/m³ over 0.2 m) keeps the strain
+    // energy below 1 J of the 1058 J: the bounce is the rigid brick's within 1 % (measured 0.2 %)
+    CHECK(kinetic[1] == Approx(kinetic[0]).epsilon(0.01));
 }
