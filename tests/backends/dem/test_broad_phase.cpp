@@ -35,8 +35,11 @@ TEST_CASE("sweep and prune finds exactly the overlapping pairs of random boxes",
     std::mt19937 rng(11);
     for (int trial = 0; trial < 5; ++trial) {
         auto boxes = random_boxes(rng, 200, 10.0, 0.05, 1.5);
-        // a few boxes sharing a lower x edge exactly (ties of the sort)
+        // two boxes sharing a lower x edge exactly (ties of the sort): box 1 moved along x whole,
+        // keeping its width (a box whose low corner passed its high one is refused by an assertion)
+        const double width = boxes[1].hi.x() - boxes[1].lo.x();
         boxes[1].lo.x() = boxes[0].lo.x();
+        boxes[1].hi.x() = boxes[0].lo.x() + width;
         std::vector<int> order;
         std::vector<std::pair<int, int>> pairs;
         dem::overlapping_pairs(boxes, order, pairs);
