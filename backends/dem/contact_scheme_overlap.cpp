@@ -138,6 +138,27 @@ void ContactSet::evaluate_overlap(std::vector<Block>& blocks, double dt, long be
                             };
                             const Vec2 centre_xi = Vec2(-1.0 + (2.0 * u + 1.0) / n, -1.0 + (2.0 * v + 1.0) / n);
                             const Vec3 centre_p = split ? quad_point(hq, centre_xi) : Vec3::Zero();
+                            // triangle k's corners in natural coordinates of the hitting face
+                            auto triangle_xi = [&](int k) {
+                                return std::array<Vec2, 3>{corner_xi(k), corner_xi((k + 1) % 4), centre_xi};
+                            };
+                            // adds scale × (barycentric weights l on triangle k's corners, each
+                            // spread by the face's bilinear weights) to the face's node weights w
+                            auto add_triangle_weights = [&](int k, const std::array<double, 3>& l, double scale,
+                                                            std::array<double, 4>& w) {
+                                const auto txi = triangle_xi(k);
+                                for (int i = 0; i < 3; ++i) {
+                                    const auto nw = quad_weights(txi[size_t(i)]);
+                                    for (int a = 0; a < 4; ++a) w[size_t(a)] += scale * l[size_t(i)] * nw[size_t(a)];
+                                }
+                            };
+                            // the hitting face's 4 nodes with weights w
+                            auto hit_face_weights = [&](const std::array<double, 4>& w) {
+                                NodeWeights nw;
+                                nw.count = 4;
+                                for (int a = 0; a < 4; ++a) nw.node[size_t(a)] = hb.mesh.faces[c.hit_face][size_t(a)], nw.w[size_t(a)] = w[size_t(a)];
+                                return nw;
+                            };
                             std::array<ClipPolygon, 4> polys;
                             std::array<OverlapIntegrals, 4> part;
                             OverlapIntegrals in;
@@ -225,21 +246,16 @@ void ContactSet::evaluate_overlap(std::vector<Block>& blocks, double dt, long be
                                 for (int k = 0; k < 4; ++k) {
                                     const OverlapIntegrals& pk = part[size_t(k)];
                                     if (polys[size_t(k)].n == 0 || !(pk.area > 0.0)) continue;   // nothing of it in contact
-                                    const std::array<Vec2, 3> txi = {corner_xi(k), corner_xi((k + 1) % 4), centre_xi};
+                                    const auto txi = triangle_xi(k);
                                     std::array<Vec3, 3> x;
                                     for (int i = 0; i < 3; ++i) {
                                         const Vec3 p = quad_point(hq, txi[size_t(i)]);
                                         x[size_t(i)] = p + nt.dot(ct - p) * nt;
                                     }
                                     const auto l = barycentric(pk.pressure_centre(), x[0], x[1], x[2], nt);
-                                    const double share = (pk.d1 + eta * pk.area) / total;
-                                    for (int i = 0; i < 3; ++i) {
-                                        const auto nw = quad_weights(txi[size_t(i)]);
-                                        for (int a = 0; a < 4; ++a) w[size_t(a)] += share * l[size_t(i)] * nw[size_t(a)];
-                                    }
+                                    add_triangle_weights(k, l, (pk.d1 + eta * pk.area) / total, w);
                                 }
-                                wh_n.count = 4;
-                                for (int a = 0; a < 4; ++a) wh_n.node[size_t(a)] = hb.mesh.faces[c.hit_face][size_t(a)], wh_n.w[size_t(a)] = w[size_t(a)];
+                                wh_n = hit_face_weights(w);
                             }
                             wt_n = tb.deformable ? plane_weights(tq, tb.mesh.faces[tf], ct, nt, xs) : node_weights(tb, tf, xs);
                             const Vec3 vrel = wh.velocity(hb) - wt.velocity(tb);
@@ -359,18 +375,12 @@ void ContactSet::evaluate_overlap(std::vector<Block>& blocks, double dt, long be
                                     NodeWeights eh;
                                     if (!split) eh = node_weights(hb, c.hit_face, e.point);
                                     else {
-                                        const std::array<Vec2, 3> txi = {corner_xi(k), corner_xi((k + 1) % 4), centre_xi};
                                         const Vec3& x0 = grid[size_t(corner[size_t(k)])];
                                         const Vec3& x1 = grid[size_t(corner[size_t((k + 1) % 4)])];
                                         const Vec3 tn = (x1 - x0).cross(centre_p - x0).normalized();
-                                        const auto l = barycentric(e.point, x0, x1, centre_p, tn);
                                         std::array<double, 4> w{};
-                                        for (int j = 0; j < 3; ++j) {
-                                            const auto nw = quad_weights(txi[size_t(j)]);
-                                            for (int a = 0; a < 4; ++a) w[size_t(a)] += l[size_t(j)] * nw[size_t(a)];
-                                        }
-                                        eh.count = 4;
-                                        for (int a = 0; a < 4; ++a) eh.node[size_t(a)] = hb.mesh.faces[c.hit_face][size_t(a)], eh.w[size_t(a)] = w[size_t(a)];
+                                        add_triangle_weights(k, barycentric(e.point, x0, x1, centre_p, tn), 1.0, w);
+                                        eh = hit_face_weights(w);
                                     }
                                     const NodeWeights et = tb.deformable ? plane_weights(tq, tb.mesh.faces[tf], ct, nt, e.point) : node_weights(tb, tf, e.point);
                                     const SubForce edge{eh, et, e.force, nt, eh, et};

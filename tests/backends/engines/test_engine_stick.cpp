@@ -10,6 +10,30 @@
 using namespace cairn;
 using namespace cairn::test;
 
+namespace {
+
+// 2 s of a scene on contact springs kn = ks (N/m³) damped at ζ = 0.05
+void stick_contact(Scene& s, double kn) {
+    s.run.duration = 2.0;
+    s.contact.kn = s.contact.ks = kn;
+    s.contact.damping_rule = ContactDampingRule::ratio;
+    s.contact.damping = 0.05;
+}
+
+// block pushed along x by H (N) at `point` (block frame, m), ramped over 0.5 s, judged by the
+// stick reference
+void push_held(Scene& s, int block, double H, const Vec3& point) {
+    LoadDef push;
+    push.block = block;
+    push.force = Vec3(H, 0, 0);
+    push.point = point;
+    push.ramp = 0.5;
+    s.loads.push_back(push);
+    s.reference = ReferenceDef{"stick", block, {{"force", H}}};
+}
+
+}  // namespace
+
 TEST_CASE("every backend: a cube pushed at its top by 0.45 W holds on the 15 % of its base still pressed",
           "[engines][stick]") {
     const std::string engine = GENERATE(from_range(all_backend_names()));
@@ -22,20 +46,10 @@ TEST_CASE("every backend: a cube pushed at its top by 0.45 W holds on the 15 % o
     // load stays; a straight line through that swing read −7.3 µm of drift over the second half
     // (a miss at 5 % of the 50 µm base shear), the lines through its turning points read 2.6e-8 m
     Scene s = base_scene("stick_top");
-    s.run.duration = 2.0;
-    s.contact.kn = s.contact.ks = 1e9;
-    s.contact.damping_rule = ContactDampingRule::ratio;
-    s.contact.damping = 0.05;
+    stick_contact(s, 1e9);
     const int a = add_box(s, "A", Vec3(0.5, 0.5, 0.5), Vec3(0, 0, 0.25), false);
     add_box(s, "B", Vec3(3.0, 3.0, 0.5), Vec3(0, 0, -0.25), true);
-    const double H = 0.45 * 325.0 * 9.81;
-    LoadDef push;
-    push.block = a;
-    push.force = Vec3(H, 0, 0);
-    push.point = Vec3(0, 0, 0.25);
-    push.ramp = 0.5;
-    s.loads.push_back(push);
-    s.reference = ReferenceDef{"stick", a, {{"force", H}}};
+    push_held(s, a, 0.45 * 325.0 * 9.81, Vec3(0, 0, 0.25));
     const bool dem = engine == "dem";
     const auto r = cases::analyse_case(s, sampled_run(engine, s), {dem, dem});
     const auto& held = find_metric(r, "slip while held");
@@ -63,20 +77,11 @@ namespace {
 // 0.5 s, for 2 s: the stick reference on the top cube
 Scene pushed_stack() {
     Scene s = base_scene("stack_hold");
-    s.run.duration = 2.0;
-    s.contact.kn = s.contact.ks = 1e10;
-    s.contact.damping_rule = ContactDampingRule::ratio;
-    s.contact.damping = 0.05;
+    stick_contact(s, 1e10);
     add_box(s, "low", Vec3(0.5, 0.5, 0.5), Vec3(0, 0, 0.25), false);
     const int top = add_box(s, "top", Vec3(0.5, 0.5, 0.5), Vec3(0, 0, 0.75), false);
     add_box(s, "base", Vec3(2.0, 2.0, 0.4), Vec3(0, 0, -0.2), true);
-    const double H = 0.5 * 325.0 * 9.81;
-    LoadDef push;
-    push.block = top;
-    push.force = Vec3(H, 0, 0);
-    push.ramp = 0.5;
-    s.loads.push_back(push);
-    s.reference = ReferenceDef{"stick", top, {{"force", H}}};
+    push_held(s, top, 0.5 * 325.0 * 9.81, Vec3::Zero());
     return s;
 }
 
