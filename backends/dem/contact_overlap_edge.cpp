@@ -6,13 +6,14 @@
 namespace cairn::dem {
 
 EdgeForce edge_force(const ClipPolygon& poly, int i, const Vec3& c, const Vec3& n, const Affine& g,
-                     const Vec3& slope, double kn) {
+                     const Vec3& slope, double kn, const Affine* depth) {
     EdgeForce e;
     const Vec3& p0 = poly.p[size_t(i)];
     const Vec3& p1 = poly.p[size_t((i + 1) % poly.n)];
-    // the polygon lies behind the plane: depths below zero are rounding
-    const double d0 = std::max(0.0, n.dot(c - p0)), d1 = std::max(0.0, n.dot(c - p1));
-    const double length = ((p1 + d1 * n) - (p0 + d0 * n)).norm();
+    // the polygon lies behind the plane: heights below zero are rounding
+    const double h0 = std::max(0.0, n.dot(c - p0)), h1 = std::max(0.0, n.dot(c - p1));
+    const double length = ((p1 + h1 * n) - (p0 + h0 * n)).norm();
+    const double d0 = depth ? std::max(0.0, (*depth)(p0)) : h0, d1 = depth ? std::max(0.0, (*depth)(p1)) : h1;
     // d is linear along the edge: ∫d² ds and ∫p·d² ds in closed form (Bernstein moments)
     const double w0 = d0 * d0 / 4.0 + d0 * d1 / 6.0 + d1 * d1 / 12.0;
     const double w1 = d0 * d0 / 12.0 + d0 * d1 / 6.0 + d1 * d1 / 4.0;

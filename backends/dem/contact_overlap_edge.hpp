@@ -21,8 +21,10 @@ struct EdgeForce {
     double offset_gradient = 0.0;///< dU/db: U's change per unit of the constraint's offset b, N
 };
 /// the edge force of edge i of `poly` (target plane through c, unit normal n; penalty kn, N/m³;
-/// `slope` the polygon's OverlapIntegrals::slope)
+/// `slope` the polygon's OverlapIntegrals::slope, the gradient of its depth behind that plane);
+/// `depth`: the penetration when it is not the depth behind that plane (the region beyond a capped
+/// cut, contact_overlap_beyond.hpp), m; the polygon is still projected on that plane
 EdgeForce edge_force(const ClipPolygon& poly, int i, const Vec3& c, const Vec3& n, const Affine& g,
-                     const Vec3& slope, double kn);
+                     const Vec3& slope, double kn, const Affine* depth = nullptr);
 
 }  // namespace cairn::dem

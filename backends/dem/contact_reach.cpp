@@ -44,7 +44,12 @@ int side_constraints(const PairGeometry& g, int s, const Vec3& hit_normal, bool 
                 if (caps) (*caps)[size_t(k)] = ReachCap{deepest, o};
             }
         }
-        out[k++] = Affine{ns - no, co - cs + tol};
+        if (loose) {
+            // the region beyond a capped cut reaches d_s = (1 + 1/κ)(d_o + reach), reach ≤ tol
+            const double m = 1.0 + 1.0 / kBeyondTaper;
+            out[k++] = Affine{ns - m * no, m * (co + tol) - cs};
+        } else
+            out[k++] = Affine{ns - no, co - cs + tol};
     }
     return k;
 }

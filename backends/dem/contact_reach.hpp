@@ -15,14 +15,19 @@ namespace cairn::dem {
 /// that a side square to another (within 1e-3 rad: never a hitting side) is left out at refresh
 constexpr double kRefreshTurn = 2e-4;
 
+/// the rate at which the region beyond a capped cut fades (contact_overlap_beyond.hpp): its depth
+/// is (1 + κ)(d_o + reach) − κ·d_s, zero where d_s = (1 + 1/κ)(d_o + reach)
+constexpr double kBeyondTaper = 0.25;
+
 /// most constraints of one target side: depth, 4 face edges, and per other side flush and entering
 constexpr int kMaxSideConstraints = 16;
 
 /// The affine constraints of target side s that do not depend on the target face (docs/dem.md,
 /// overlap scheme): behind every other side plane (flush within flush_tol) and not entering
 /// through another side. `hit_normal` is the hitting side's outward unit normal; `loose` gives
-/// every entering constraint the closer tolerance whatever the hitting normal (the refresh's
-/// bound over any orientation the blocks reach). With `hit_face`, the closer tolerance of a side o
+/// every entering constraint the closer tolerance whatever the hitting normal, widened to cover the
+/// region beyond a capped cut, d_s ≤ (1 + 1/κ)(d_o + closer tolerance) (the refresh's bound over
+/// any orientation the blocks reach). With `hit_face`, the closer tolerance of a side o
 /// the hitting side does not face is at most how far the face's corners reach behind o's plane.
 /// Returns the count written to `out`.
 /// A closer constraint whose tolerance is the hitting face's reach behind side o: its offset moves

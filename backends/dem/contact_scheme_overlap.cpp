@@ -7,6 +7,7 @@
 
 #include "contact.hpp"
 #include "contact_overlap.hpp"
+#include "contact_overlap_beyond.hpp"
 #include "contact_overlap_edge.hpp"
 #include "contact_reach.hpp"
 
@@ -67,6 +68,8 @@ void ContactSet::evaluate_overlap(std::vector<Block>& blocks, double dt, long be
         g.update(blocks, frames_, c.hit_block, c.target_block);
         const int hit_side = hb.mesh.face_side[c.hit_face];
         const std::array<char, 6>& faces = g.faces(hit_side);
+        // rigid pairs keep the region beyond a capped cut (contact_overlap_beyond.hpp)
+        const bool beyond = !hb.deformable && !tb.deformable;
         if (faces[0] || faces[1] || faces[2] || faces[3] || faces[4] || faces[5]) {
             const Quad hq = hb.face_quad(c.hit_face);
             Aabb hbox;
@@ -88,7 +91,13 @@ void ContactSet::evaluate_overlap(std::vector<Block>& blocks, double dt, long be
                     return false;
                 };
                 const int side_count = side_constraints(g, s, frames_[size_t(c.hit_block)].normal[size_t(hit_side)], false, cons, &hq, &caps);
-                if (missed_by(cons.data(), cons.data() + side_count)) continue;
+                // a capped cut that misses the face leaves it to the region beyond
+                bool capped = false, missed = false;
+                for (int k = 0; k < side_count && !missed; ++k) {
+                    if (beyond && caps[size_t(k)].corner >= 0 && tb.mesh.side_grid[size_t(s)].size() == 1) capped = true;
+                    else missed = missed_by(cons.data() + k, cons.data() + k + 1);
+                }
+                if (missed) continue;
                 if (!ready) {
                     ready = true;
                     for (const auto& p : hq) hbox.add(p);
@@ -159,6 +168,13 @@ void ContactSet::evaluate_overlap(std::vector<Block>& blocks, double dt, long be
                                 for (int a = 0; a < 4; ++a) nw.node[size_t(a)] = hb.mesh.faces[c.hit_face][size_t(a)], nw.w[size_t(a)] = w[size_t(a)];
                                 return nw;
                             };
+                            if (capped) {
+                                ClipPolygon cell;
+                                cell.n = 4;
+                                for (int i = 0; i < 4; ++i) cell.p[size_t(i)] = grid[size_t(corner[size_t(i)])];
+                                const BeyondCell bc{&cell, cons.data(), side_count, nc, caps.data(), &g, ct, nt, &hq, law_.kn};
+                                tot.stored += apply_beyond(bc, hb, c.hit_face, tb, tf, keep_forces ? &c.sub_forces : nullptr);
+                            }
                             std::array<ClipPolygon, 4> polys;
                             std::array<OverlapIntegrals, 4> part;
                             OverlapIntegrals in;
@@ -369,6 +385,7 @@ void ContactSet::evaluate_overlap(std::vector<Block>& blocks, double dt, long be
                                 for (int i = 0; i < poly.n; ++i) {
                                     const int cut = int(poly.by[size_t(i)]) - 1;
                                     if (cut < 0 || cut == side_count) continue;
+                                    if (capped && cut < side_count && caps[size_t(cut)].corner >= 0) continue;   // joins the region beyond
                                     const EdgeForce e = edge_force(poly, i, ct, nt, cons[size_t(cut)], slope, law_.kn);
                                     if (e.force.isZero(0.0)) continue;
                                     anchor->edged = true;

@@ -1,0 +1,128 @@
+#include "contact_overlap_beyond.hpp"
+
+#include <cmath>
+
+#include "contact_overlap_edge.hpp"
+
+namespace cairn::dem {
+
+BeyondIntegrals integrate_beyond(const ClipPolygon& poly, const Vec3& c, const Vec3& n, const Affine& depth) {
+    BeyondIntegrals r;
+    if (poly.n < 3) return r;
+    // projected vertices, their heights behind the plane and their depths
+    std::array<Vec3, ClipPolygon::kMaxVertices> x;
+    std::array<double, ClipPolygon::kMaxVertices> h, d;
+    for (int i = 0; i < poly.n; ++i) {
+        h[size_t(i)] = n.dot(c - poly.p[size_t(i)]);
+        x[size_t(i)] = poly.p[size_t(i)] + h[size_t(i)] * n;
+        d[size_t(i)] = depth(poly.p[size_t(i)]);
+    }
+    // fan from vertex 0; over a triangle with barycentric λ, ∫λiλj dA = A(1 + δij)/12, and the
+    // polygon's points p are affine in the projected ones
+    for (int i = 1; i + 1 < poly.n; ++i) {
+        const size_t i0 = 0, i1 = size_t(i), i2 = size_t(i + 1);
+        const double a = 0.5 * (x[i1] - x[i0]).cross(x[i2] - x[i0]).dot(n);
+        const double s = d[i0] + d[i1] + d[i2];
+        const double q = d[i0] * d[i0] + d[i1] * d[i1] + d[i2] * d[i2];
+        const Vec3 sp = poly.p[i0] + poly.p[i1] + poly.p[i2];
+        const Vec3 pd = d[i0] * poly.p[i0] + d[i1] * poly.p[i1] + d[i2] * poly.p[i2];
+        r.slope += 0.5 * n.cross(h[i0] * (x[i2] - x[i1]) + h[i1] * (x[i0] - x[i2]) + h[i2] * (x[i1] - x[i0]));
+        r.area += a;
+        r.d1 += a * s / 3.0;
+        r.d2 += a * (s * s + q) / 12.0;
+        r.moment += a * (pd + sp * s) / 12.0;
+        r.first += a * sp / 3.0;
+    }
+    // a hitting cell seen from the target runs clockwise: the signs of the fan follow its turn
+    if (r.area < 0.0) {
+        r.area = -r.area;
+        r.d1 = -r.d1;
+        r.d2 = -r.d2;
+        r.moment = -r.moment;
+        r.first = -r.first;
+        r.slope = -r.slope;
+    }
+    if (r.area > 0.0) r.slope /= r.area;
+    return r;
+}
+
+double apply_beyond(const BeyondCell& in, Block& hb, int f, Block& tb, int tf, std::vector<SubForce>* kept) {
+    const PairGeometry& g = *in.g;
+    const Quad& face = *in.hit_face;
+    // a force at world point x on both blocks (the target takes −force)
+    auto point_force = [&](const Vec3& x, const Vec3& force) {
+        const NodeWeights wh = node_weights(hb, f, x), wt = node_weights(tb, tf, x);
+        const SubForce sub{wh, wt, force, in.n, wh, wt};
+        if (kept) kept->push_back(sub);
+        else sub.spread(hb, tb);
+    };
+    // the depth beyond capped cut k, d_B = (1 + κ)(d_o + reach) − κ·d_s: behind its side o plus
+    // the face's reach behind o, less κ times the depth past the cut
+    constexpr double kappa = kBeyondTaper;
+    auto beyond_depth = [&](int k) {
+        const Vec3& no = g.normal[size_t(in.caps[k].side)];
+        const double co = no.dot(g.centre[size_t(in.caps[k].side)]);
+        const double reach = co - no.dot(face[size_t(in.caps[k].corner)]);
+        return Affine{-(1.0 + kappa) * no + kappa * in.n, (1.0 + kappa) * (co + reach) - kappa * in.n.dot(in.c)};
+    };
+    double stored = 0.0;
+    std::array<Affine, kMaxSideConstraints> cons;
+    for (int q = 0; q < in.side_count; ++q) {
+        if (in.caps[q].corner < 0) continue;
+        const Affine depth = beyond_depth(q);
+        // beyond cut q, where o's depth is the least of the capped ones, inside every other constraint
+        ClipPolygon poly = *in.cell;
+        for (int k = 0; k < in.count; ++k) {
+            cons[size_t(k)] = in.cons[k];
+            if (k == q) cons[size_t(k)] = Affine{-in.cons[k].a, -in.cons[k].b};
+            else if (k < in.side_count && in.caps[k].corner >= 0) {
+                const Affine other = beyond_depth(k);
+                cons[size_t(k)] = Affine{other.a - depth.a, other.b - depth.b};
+            }
+            if (poly.n >= 3) clip(poly, cons[size_t(k)], k);
+        }
+        if (poly.n >= 3) clip(poly, depth, in.count);   // d_B ≥ 0
+        // no vertex strictly beyond the cut: nothing of it is (a face exactly on the cut's plane
+        // lies on both sides of it, and counts before it)
+        bool past = false;
+        for (int i = 0; i < poly.n; ++i) past = past || in.cons[q](poly.p[size_t(i)]) < 0.0;
+        if (poly.n < 3 || !past) continue;
+        const BeyondIntegrals r = integrate_beyond(poly, in.c, in.n, depth);
+        if (!(r.d1 > 0.0) || !(r.area > 0.0)) continue;
+        stored += 0.5 * in.kn * r.d2;
+        // −kn·d_B·∇d_B at each point: at the depth-weighted centre of the points; the reach moves
+        // with the deepest corner: (1 + κ)·kn∫d_B along o's normal there
+        constexpr double eta = 1e-12;   // as in OverlapIntegrals::pressure_centre()
+        const Vec3 xb = (r.moment + eta * r.first) / (r.d1 + eta * r.area);
+        point_force(xb, -in.kn * r.d1 * depth.a);
+        point_force(face[size_t(in.caps[q].corner)], (1.0 + kappa) * in.kn * r.d1 * g.normal[size_t(in.caps[q].side)]);
+        // the face's projected area on the target plane changes as it turns: the couple
+        // ½kn·n × ∫d_B²·∇h dA (∇h the gradient of the face's depth behind the plane), as a pair of
+        // opposite forces (the target takes the opposite couple)
+        const Vec3 tau = 0.5 * in.kn * in.n.cross(r.d2 * r.slope);
+        const double tn = tau.norm();
+        if (tn > 0.0) {
+            const Vec3 t = tau / tn;
+            Vec3 e = t.cross(in.n);
+            if (e.norm() < 1e-6) e = t.cross(Vec3::UnitX());
+            if (e.norm() < 1e-6) e = t.cross(Vec3::UnitY());
+            e.normalize();
+            const Vec3 w = e.cross(t);   // (ℓw) × (|τ|/ℓ)e = |τ|·t
+            const double arm = hb.min_edge;
+            point_force(xb + 0.5 * arm * w, (tn / arm) * e);
+            point_force(xb - 0.5 * arm * w, -(tn / arm) * e);
+        }
+        // where the region ends on a constraint fixed to the target with depth: the edge forces
+        // (not on the capped cuts, where d_B joins d_s or another d_B, nor where d_B = 0)
+        for (int i = 0; i < poly.n; ++i) {
+            const int cut = int(poly.by[size_t(i)]) - 1;
+            if (cut < 0 || cut >= in.count || cut == in.side_count) continue;
+            if (cut < in.side_count && in.caps[cut].corner >= 0) continue;
+            const EdgeForce e = edge_force(poly, i, in.c, in.n, cons[size_t(cut)], r.slope, in.kn, &depth);
+            if (!e.force.isZero(0.0)) point_force(e.point, e.force);
+        }
+    }
+    return stored;
+}
+
+}  // namespace cairn::dem
