@@ -49,12 +49,34 @@ BeyondIntegrals integrate_beyond(const ClipPolygon& poly, const Vec3& c, const V
 double apply_beyond(const BeyondCell& in, Block& hb, int f, Block& tb, int tf, std::vector<SubForce>* kept) {
     const PairGeometry& g = *in.g;
     const Quad& face = *in.hit_face;
-    // a force at world point x on both blocks (the target takes −force)
-    auto point_force = [&](const Vec3& x, const Vec3& force) {
-        const NodeWeights wh = node_weights(hb, f, x), wt = node_weights(tb, tf, x);
+    const bool split = in.parts > 1;
+    auto put = [&](const NodeWeights& wh, const NodeWeights& wt, const Vec3& force) {
         const SubForce sub{wh, wt, force, in.n, wh, wt};
         if (kept) kept->push_back(sub);
         else sub.spread(hb, tb);
+    };
+    // the hitting face's weights of a point of piece k: on a triangle, its barycentric weights,
+    // each corner spread by the face's bilinear weights
+    auto hit_weights = [&](int k, const Vec3& x) {
+        if (!split) return node_weights(hb, f, x);
+        const ClipPolygon& t = (*in.pieces)[size_t(k)];
+        const Vec3 tn = (t.p[1] - t.p[0]).cross(t.p[2] - t.p[0]).normalized();
+        const auto l = barycentric(x, t.p[0], t.p[1], t.p[2], tn);
+        NodeWeights w;
+        w.count = 4;
+        for (int a = 0; a < 4; ++a) w.node[size_t(a)] = hb.mesh.faces[f][size_t(a)];
+        for (int i = 0; i < 3; ++i) {
+            const auto qw = quad_weights(in.piece_xi[size_t(k)][size_t(i)]);
+            for (int a = 0; a < 4; ++a) w.w[size_t(a)] += l[size_t(i)] * qw[size_t(a)];
+        }
+        return w;
+    };
+    // the target's weights of a force at x along the normal of the target face (side < 0) or of side o
+    auto target_weights = [&](const Vec3& x, int side) {
+        if (!tb.deformable) return node_weights(tb, tf, x);
+        if (side < 0) return plane_weights(*in.target_face, tb.mesh.faces[tf], in.c, in.n, x);
+        const int of = tb.mesh.side_grid[size_t(side)][0];
+        return plane_weights(tb.face_quad(of), tb.mesh.faces[of], g.centre[size_t(side)], g.normal[size_t(side)], x);
     };
     // the depth beyond capped cut k, d_B = (1 + κ)(d_o + reach) − κ·d_s: behind its side o plus
     // the face's reach behind o, less κ times the depth past the cut
@@ -69,9 +91,10 @@ double apply_beyond(const BeyondCell& in, Block& hb, int f, Block& tb, int tf, s
     std::array<Affine, kMaxSideConstraints> cons;
     for (int q = 0; q < in.side_count; ++q) {
         if (in.caps[q].corner < 0) continue;
+        const int o = in.caps[q].side;
+        const Vec3& no = g.normal[size_t(o)];
         const Affine depth = beyond_depth(q);
         // beyond cut q, where o's depth is the least of the capped ones, inside every other constraint
-        ClipPolygon poly = *in.cell;
         for (int k = 0; k < in.count; ++k) {
             cons[size_t(k)] = in.cons[k];
             if (k == q) cons[size_t(k)] = Affine{-in.cons[k].a, -in.cons[k].b};
@@ -79,48 +102,67 @@ double apply_beyond(const BeyondCell& in, Block& hb, int f, Block& tb, int tf, s
                 const Affine other = beyond_depth(k);
                 cons[size_t(k)] = Affine{other.a - depth.a, other.b - depth.b};
             }
-            if (poly.n >= 3) clip(poly, cons[size_t(k)], k);
         }
-        if (poly.n >= 3) clip(poly, depth, in.count);   // d_B ≥ 0
-        // no vertex strictly beyond the cut: nothing of it is (a face exactly on the cut's plane
-        // lies on both sides of it, and counts before it)
-        bool past = false;
-        for (int i = 0; i < poly.n; ++i) past = past || in.cons[q](poly.p[size_t(i)]) < 0.0;
-        if (poly.n < 3 || !past) continue;
-        const BeyondIntegrals r = integrate_beyond(poly, in.c, in.n, depth);
-        if (!(r.d1 > 0.0) || !(r.area > 0.0)) continue;
-        stored += 0.5 * in.kn * r.d2;
-        // −kn·d_B·∇d_B at each point: at the depth-weighted centre of the points; the reach moves
-        // with the deepest corner: (1 + κ)·kn∫d_B along o's normal there
-        constexpr double eta = 1e-12;   // as in OverlapIntegrals::pressure_centre()
-        const Vec3 xb = (r.moment + eta * r.first) / (r.d1 + eta * r.area);
-        point_force(xb, -in.kn * r.d1 * depth.a);
-        point_force(face[size_t(in.caps[q].corner)], (1.0 + kappa) * in.kn * r.d1 * g.normal[size_t(in.caps[q].side)]);
-        // the face's projected area on the target plane changes as it turns: the couple
-        // ½kn·n × ∫d_B²·∇h dA (∇h the gradient of the face's depth behind the plane), as a pair of
-        // opposite forces (the target takes the opposite couple)
-        const Vec3 tau = 0.5 * in.kn * in.n.cross(r.d2 * r.slope);
-        const double tn = tau.norm();
-        if (tn > 0.0) {
-            const Vec3 t = tau / tn;
-            Vec3 e = t.cross(in.n);
-            if (e.norm() < 1e-6) e = t.cross(Vec3::UnitX());
-            if (e.norm() < 1e-6) e = t.cross(Vec3::UnitY());
-            e.normalize();
-            const Vec3 w = e.cross(t);   // (ℓw) × (|τ|/ℓ)e = |τ|·t
-            const double arm = hb.min_edge;
-            point_force(xb + 0.5 * arm * w, (tn / arm) * e);
-            point_force(xb - 0.5 * arm * w, -(tn / arm) * e);
+        double d1 = 0.0;   // ∫d_B dA over the cell, m³
+        for (int part = 0; part < in.parts; ++part) {
+            ClipPolygon poly = (*in.pieces)[size_t(part)];
+            for (int k = 0; k < in.count && poly.n >= 3; ++k) clip(poly, cons[size_t(k)], k);
+            if (poly.n >= 3) clip(poly, depth, in.count);   // d_B ≥ 0
+            // no vertex strictly beyond the cut: nothing of it is (a face exactly on the cut's
+            // plane lies on both sides of it, and counts before it)
+            bool past = false;
+            for (int i = 0; i < poly.n; ++i) past = past || in.cons[q](poly.p[size_t(i)]) < 0.0;
+            if (poly.n < 3 || !past) continue;
+            const BeyondIntegrals r = integrate_beyond(poly, in.c, in.n, depth);
+            if (!(r.d1 > 0.0) || !(r.area > 0.0)) continue;
+            stored += 0.5 * in.kn * r.d2;
+            d1 += r.d1;
+            // −kn·d_B·∇d_B at each point: at the depth-weighted centre of the points, its part
+            // along o's normal and its part along the target face's on the target's weights of each
+            constexpr double eta = 1e-12;   // as in OverlapIntegrals::pressure_centre()
+            const Vec3 xb = (r.moment + eta * r.first) / (r.d1 + eta * r.area);
+            const NodeWeights wh = hit_weights(part, xb);
+            put(wh, target_weights(xb, o), (1.0 + kappa) * in.kn * r.d1 * no);
+            put(wh, target_weights(xb, -1), -kappa * in.kn * r.d1 * in.n);
+            // a rigid face's projected area on the target plane changes as it turns: the couple
+            // ½kn·n × ∫d_B²·∇h dA (∇h the gradient of the face's depth behind the plane), as a
+            // pair of opposite forces (the target takes the opposite couple)
+            const Vec3 tau = 0.5 * in.kn * in.n.cross(r.d2 * r.slope);
+            const double tn = tau.norm();
+            if (!split && tn > 0.0) {
+                const Vec3 t = tau / tn;
+                Vec3 e = t.cross(in.n);
+                if (e.norm() < 1e-6) e = t.cross(Vec3::UnitX());
+                if (e.norm() < 1e-6) e = t.cross(Vec3::UnitY());
+                e.normalize();
+                const Vec3 w = e.cross(t);   // (ℓw) × (|τ|/ℓ)e = |τ|·t
+                const double arm = hb.min_edge;
+                for (const double side : {0.5, -0.5}) {
+                    const Vec3 x = xb + side * arm * w;
+                    put(node_weights(hb, f, x), node_weights(tb, tf, x), (2.0 * side * tn / arm) * e);
+                }
+            }
+            // where the region ends on a constraint fixed to the target with depth: the edge
+            // forces (not on the capped cuts, where d_B joins d_s or another d_B, nor where d_B = 0)
+            for (int i = 0; i < poly.n; ++i) {
+                const int cut = int(poly.by[size_t(i)]) - 1;
+                if (cut < 0 || cut >= in.count || cut == in.side_count) continue;
+                if (cut < in.side_count && in.caps[cut].corner >= 0) continue;
+                const EdgeForce e = edge_force(poly, i, in.c, in.n, cons[size_t(cut)], r.slope, in.kn, &depth);
+                if (!e.force.isZero(0.0)) put(hit_weights(part, e.point), target_weights(e.point, -1), e.force);
+            }
         }
-        // where the region ends on a constraint fixed to the target with depth: the edge forces
-        // (not on the capped cuts, where d_B joins d_s or another d_B, nor where d_B = 0)
-        for (int i = 0; i < poly.n; ++i) {
-            const int cut = int(poly.by[size_t(i)]) - 1;
-            if (cut < 0 || cut >= in.count || cut == in.side_count) continue;
-            if (cut < in.side_count && in.caps[cut].corner >= 0) continue;
-            const EdgeForce e = edge_force(poly, i, in.c, in.n, cons[size_t(cut)], r.slope, in.kn, &depth);
-            if (!e.force.isZero(0.0)) point_force(e.point, e.force);
+        if (!(d1 > 0.0)) continue;
+        // the reach moves with the deepest corner: (1 + κ)·kn∫d_B along o's normal there
+        const Vec3& corner = face[size_t(in.caps[q].corner)];
+        NodeWeights wc;
+        if (!split) wc = node_weights(hb, f, corner);
+        else {
+            wc.count = 4;
+            for (int a = 0; a < 4; ++a) wc.node[size_t(a)] = hb.mesh.faces[f][size_t(a)];
+            wc.w[size_t(in.caps[q].corner)] = 1.0;
         }
+        put(wc, target_weights(corner, o), (1.0 + kappa) * in.kn * d1 * no);
     }
     return stored;
 }

@@ -1,5 +1,5 @@
 #pragma once
-/// The overlap scheme's region beyond a capped cut (rigid pairs). A hitting face that does not face
+/// The overlap scheme's region beyond a capped cut. A hitting face that does not face
 /// target side o counts for side s only where its depth behind s is at most its depth behind o plus
 /// the face's reach behind o (contact_reach.hpp). Dropping the rest made the stored energy jump:
 /// a face lying on the bisector of s and o (a brick turning through 45° with its edge pressed into
@@ -38,23 +38,31 @@ struct BeyondIntegrals {
 };
 BeyondIntegrals integrate_beyond(const ClipPolygon& poly, const Vec3& c, const Vec3& n, const Affine& depth);
 
-/// What one sub-cell of a rigid hitting face needs to apply its regions beyond the capped cuts of
-/// target side s: the cell (unclipped), the side's constraints (the first `side_count` are the other
-/// sides' planes and cuts, `caps` marks the capped cuts), then the target face's (up to `count`),
-/// the target face's plane (c, n), the hitting face's corners and the pair's geometry.
+/// What one sub-cell of a hitting face needs to apply its regions beyond the capped cuts of target
+/// side s: the cell (unclipped; on a deformable hitting face its 4 triangles, each two neighbouring
+/// corners and the cell's centre, with their natural coordinates on the face), the side's
+/// constraints (the first `side_count` are the other sides' planes and cuts, `caps` marks the capped
+/// cuts), then the target face's (up to `count`), the target face (plane c, n) and the hitting face.
 struct BeyondCell {
-    const ClipPolygon* cell = nullptr;
+    int parts = 1;                                   ///< 1: the cell (rigid hitting face); 4: its triangles
+    const std::array<ClipPolygon, 4>* pieces = nullptr;
+    std::array<std::array<Vec2, 3>, 4> piece_xi{};   ///< deformable: the triangles' corners on the hitting face
     const Affine* cons = nullptr;
     int side_count = 0, count = 0;
     const ReachCap* caps = nullptr;
     const PairGeometry* g = nullptr;
     Vec3 c = Vec3::Zero(), n = Vec3::UnitZ();
     const Quad* hit_face = nullptr;
+    const Quad* target_face = nullptr;
     double kn = 0.0;   ///< N/m³
 };
 
 /// the energy stored beyond the capped cuts of one cell (J); its forces are spread on the blocks, or
-/// kept in `kept` when given (hit face f of hb on target face tf of tb)
+/// kept in `kept` when given (hit face f of hb on target face tf of tb). A deformable hitting face
+/// takes each triangle's forces by their barycentric weights, without the tilt couple (as the
+/// region before the cut); a deformable target takes the forces along o's normal by the weights of
+/// o's face plane and the rest by those of the target face's (contact_pair.hpp, plane_weights), so
+/// its sides must be one face each
 double apply_beyond(const BeyondCell& in, Block& hb, int f, Block& tb, int tf, std::vector<SubForce>* kept);
 
 }  // namespace cairn::dem

@@ -180,4 +180,39 @@ NodeWeights node_weights(const Block& b, int face, const Vec3& x) {
     return nw;
 }
 
+namespace {
+// ∂N_i/∂ξ, ∂N_i/∂η of a face's bilinear weights (quad_weights) at its centre, times 4
+const double kSign[4][2] = {{-1, -1}, {1, -1}, {1, 1}, {-1, 1}};
+}  // namespace
+
+// The weights of the 4 nodes of a deformable target face q (the face's nodes `nodes`) whose normal
+// forces are the gradient of the stored energy for a normal force at xs: the energy sees the face
+// only through its plane (centre c, normal n at the centre), which a warp of the face does not move.
+// With r = c − xs: w_i = ¼ + ∂N_i/∂ξ·((b×r)·n)/J + ∂N_i/∂η·((r×a)·n)/J, a, b the face's tangents at
+// its centre, J = (a×b)·n; Σw = 1 and Σw·q = xs, so force and moment are those of a force at xs
+NodeWeights plane_weights(const Quad& q, const std::array<int, 4>& nodes, const Vec3& c, const Vec3& n, const Vec3& xs) {
+    Vec3 a = Vec3::Zero(), b = Vec3::Zero();
+    for (int i = 0; i < 4; ++i) {
+        a += 0.25 * kSign[i][0] * q[i];
+        b += 0.25 * kSign[i][1] * q[i];
+    }
+    const Vec3 r = c - xs;
+    const double j = a.cross(b).dot(n);
+    const double cb = b.cross(r).dot(n) / j, ca = r.cross(a).dot(n) / j;
+    NodeWeights w;
+    w.count = 4;
+    for (int i = 0; i < 4; ++i) {
+        w.node[size_t(i)] = nodes[size_t(i)];
+        w.w[size_t(i)] = 0.25 * (1.0 + kSign[i][0] * cb + kSign[i][1] * ca);
+    }
+    return w;
+}
+
+// barycentric coordinates of x in the triangle (x0, x1, x2), all on a plane of unit normal n
+std::array<double, 3> barycentric(const Vec3& x, const Vec3& x0, const Vec3& x1, const Vec3& x2, const Vec3& n) {
+    const double den = (x1 - x0).cross(x2 - x0).dot(n);
+    const double l1 = (x - x0).cross(x2 - x0).dot(n) / den, l2 = (x1 - x0).cross(x - x0).dot(n) / den;
+    return {1.0 - l1 - l2, l1, l2};
+}
+
 }  // namespace cairn::dem

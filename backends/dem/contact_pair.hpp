@@ -109,4 +109,12 @@ struct NodeWeights {
 /// the weights that put a force at world point x on block b (face: the boundary face nearest x)
 NodeWeights node_weights(const Block& b, int face, const Vec3& x);
 
+/// The weights of the 4 nodes of a deformable target face q (its nodes `nodes`) whose forces along
+/// n at xs are the gradient of an energy that sees the face only through its plane (centre c,
+/// unit normal n at the centre): Σw = 1 and Σw·q = xs projected on the plane
+NodeWeights plane_weights(const Quad& q, const std::array<int, 4>& nodes, const Vec3& c, const Vec3& n, const Vec3& xs);
+
+/// barycentric coordinates of x in the triangle (x0, x1, x2), all on a plane of unit normal n
+std::array<double, 3> barycentric(const Vec3& x, const Vec3& x0, const Vec3& x1, const Vec3& x2, const Vec3& n);
+
 }  // namespace cairn::dem

@@ -18,39 +18,6 @@ namespace {
 constexpr int kMaxSubdivision = 16;   // the scene reader's bound on contact.subdivision
 constexpr int kMaxConstraints = kMaxSideConstraints;
 
-// ∂N_i/∂ξ, ∂N_i/∂η of a face's bilinear weights (quad_weights) at its centre, times 4
-const double kSign[4][2] = {{-1, -1}, {1, -1}, {1, 1}, {-1, 1}};
-
-// The weights of the 4 nodes of a deformable target face q (the face's nodes `nodes`) whose normal
-// forces are the gradient of the stored energy for a normal force at xs: the energy sees the face
-// only through its plane (centre c, normal n at the centre), which a warp of the face does not move.
-// With r = c − xs: w_i = ¼ + ∂N_i/∂ξ·((b×r)·n)/J + ∂N_i/∂η·((r×a)·n)/J, a, b the face's tangents at
-// its centre, J = (a×b)·n; Σw = 1 and Σw·q = xs, so force and moment are those of a force at xs
-NodeWeights plane_weights(const Quad& q, const std::array<int, 4>& nodes, const Vec3& c, const Vec3& n, const Vec3& xs) {
-    Vec3 a = Vec3::Zero(), b = Vec3::Zero();
-    for (int i = 0; i < 4; ++i) {
-        a += 0.25 * kSign[i][0] * q[i];
-        b += 0.25 * kSign[i][1] * q[i];
-    }
-    const Vec3 r = c - xs;
-    const double j = a.cross(b).dot(n);
-    const double cb = b.cross(r).dot(n) / j, ca = r.cross(a).dot(n) / j;
-    NodeWeights w;
-    w.count = 4;
-    for (int i = 0; i < 4; ++i) {
-        w.node[size_t(i)] = nodes[size_t(i)];
-        w.w[size_t(i)] = 0.25 * (1.0 + kSign[i][0] * cb + kSign[i][1] * ca);
-    }
-    return w;
-}
-
-// barycentric coordinates of x in the triangle (x0, x1, x2), all on a plane of unit normal n
-std::array<double, 3> barycentric(const Vec3& x, const Vec3& x0, const Vec3& x1, const Vec3& x2, const Vec3& n) {
-    const double den = (x1 - x0).cross(x2 - x0).dot(n);
-    const double l1 = (x - x0).cross(x2 - x0).dot(n) / den, l2 = (x1 - x0).cross(x - x0).dot(n) / den;
-    return {1.0 - l1 - l2, l1, l2};
-}
-
 }  // namespace
 
 void ContactSet::evaluate_overlap(std::vector<Block>& blocks, double dt, long begin, long end, bool keep_forces) {
@@ -68,8 +35,6 @@ void ContactSet::evaluate_overlap(std::vector<Block>& blocks, double dt, long be
         g.update(blocks, frames_, c.hit_block, c.target_block);
         const int hit_side = hb.mesh.face_side[c.hit_face];
         const std::array<char, 6>& faces = g.faces(hit_side);
-        // rigid pairs keep the region beyond a capped cut (contact_overlap_beyond.hpp)
-        const bool beyond = !hb.deformable && !tb.deformable;
         if (faces[0] || faces[1] || faces[2] || faces[3] || faces[4] || faces[5]) {
             const Quad hq = hb.face_quad(c.hit_face);
             Aabb hbox;
@@ -91,12 +56,19 @@ void ContactSet::evaluate_overlap(std::vector<Block>& blocks, double dt, long be
                     return false;
                 };
                 const int side_count = side_constraints(g, s, frames_[size_t(c.hit_block)].normal[size_t(hit_side)], false, cons, &hq, &caps);
+                // the region beyond a capped cut is kept (contact_overlap_beyond.hpp) where the
+                // target side is one face, and on a deformable target so is each capped cut's side
+                bool capped = false, beyond = tb.mesh.side_grid[size_t(s)].size() == 1;
+                for (int k = 0; k < side_count; ++k)
+                    if (caps[size_t(k)].corner >= 0) {
+                        capped = true;
+                        beyond = beyond && (!tb.deformable || tb.mesh.side_grid[size_t(caps[size_t(k)].side)].size() == 1);
+                    }
+                capped = capped && beyond;
                 // a capped cut that misses the face leaves it to the region beyond
-                bool capped = false, missed = false;
-                for (int k = 0; k < side_count && !missed; ++k) {
-                    if (beyond && caps[size_t(k)].corner >= 0 && tb.mesh.side_grid[size_t(s)].size() == 1) capped = true;
-                    else missed = missed_by(cons.data() + k, cons.data() + k + 1);
-                }
+                bool missed = false;
+                for (int k = 0; k < side_count && !missed; ++k)
+                    if (!capped || caps[size_t(k)].corner < 0) missed = missed_by(cons.data() + k, cons.data() + k + 1);
                 if (missed) continue;
                 if (!ready) {
                     ready = true;
@@ -169,10 +141,33 @@ void ContactSet::evaluate_overlap(std::vector<Block>& blocks, double dt, long be
                                 return nw;
                             };
                             if (capped) {
-                                ClipPolygon cell;
-                                cell.n = 4;
-                                for (int i = 0; i < 4; ++i) cell.p[size_t(i)] = grid[size_t(corner[size_t(i)])];
-                                const BeyondCell bc{&cell, cons.data(), side_count, nc, caps.data(), &g, ct, nt, &hq, law_.kn};
+                                std::array<ClipPolygon, 4> pieces;
+                                BeyondCell bc;
+                                bc.parts = parts;
+                                bc.pieces = &pieces;
+                                for (int k = 0; k < parts; ++k) {
+                                    ClipPolygon& piece = pieces[size_t(k)];
+                                    if (split) {
+                                        piece.n = 3;
+                                        piece.p[0] = grid[size_t(corner[size_t(k)])];
+                                        piece.p[1] = grid[size_t(corner[size_t((k + 1) % 4)])];
+                                        piece.p[2] = centre_p;
+                                        bc.piece_xi[size_t(k)] = triangle_xi(k);
+                                    } else {
+                                        piece.n = 4;
+                                        for (int i = 0; i < 4; ++i) piece.p[size_t(i)] = grid[size_t(corner[size_t(i)])];
+                                    }
+                                }
+                                bc.cons = cons.data();
+                                bc.side_count = side_count;
+                                bc.count = nc;
+                                bc.caps = caps.data();
+                                bc.g = &g;
+                                bc.c = ct;
+                                bc.n = nt;
+                                bc.hit_face = &hq;
+                                bc.target_face = &tq;
+                                bc.kn = law_.kn;
                                 tot.stored += apply_beyond(bc, hb, c.hit_face, tb, tf, keep_forces ? &c.sub_forces : nullptr);
                             }
                             std::array<ClipPolygon, 4> polys;
