@@ -15,7 +15,7 @@ namespace cairn::dem {
 // strip of width d along the edge would drop in and out as d changes
 int side_constraints(const PairGeometry& g, int s, const Vec3& hit_normal, bool loose,
                      std::array<Affine, kMaxSideConstraints>& out, const Quad* hit_face,
-                     std::array<ReachCap, kMaxSideConstraints>* caps) {
+                     std::array<ReachCap, kMaxSideConstraints>* caps, double motion) {
     int k = 0;
     const Vec3& ns = g.normal[s];
     const double cs = ns.dot(g.centre[s]);
@@ -27,6 +27,25 @@ int side_constraints(const PairGeometry& g, int s, const Vec3& hit_normal, bool 
         const bool facing = !loose && hit_normal.dot(no) < -1e-3;
         double tol = facing ? 0.0 : g.closer_tol;
         if (caps) (*caps)[size_t(k)] = ReachCap{};
+        if (loose) {
+            // the refresh's bound over any orientation: the closer tolerance; where the face may
+            // be capped before the next refresh (its reach behind o, give or take `motion`, below
+            // the tolerance) widened to hold the region beyond the cut too, d_s < m(d_o + r),
+            // m = 1 + 1/κ, r the reach (contact_overlap_beyond.hpp); (m − 1)·flush_tol keeps
+            // d_s ≤ d_o + tol inside where d_o ≥ −flush_tol
+            double reach = g.closer_tol;
+            if (hit_face) {
+                reach = 0.0;
+                for (const auto& p : *hit_face) reach = std::max(reach, co - no.dot(p));
+            }
+            if (reach - motion >= g.closer_tol) out[k++] = Affine{ns - no, co - cs + g.closer_tol};
+            else {
+                const double m = 1.0 + 1.0 / kBeyondTaper;
+                const double r = std::min(g.closer_tol, reach + motion);
+                out[k++] = Affine{ns - m * no, m * (co + r) + g.closer_tol + (m - 1.0) * g.flush_tol - cs};
+            }
+            continue;
+        }
         if (!facing && hit_face) {
             // no deeper than the hitting face reaches behind o: a face that only dips behind o's
             // plane (a brick hanging over the edge of its base, its bottom sunk a millimetre into
@@ -44,12 +63,7 @@ int side_constraints(const PairGeometry& g, int s, const Vec3& hit_normal, bool 
                 if (caps) (*caps)[size_t(k)] = ReachCap{deepest, o};
             }
         }
-        if (loose) {
-            // the region beyond a capped cut reaches d_s = (1 + 1/κ)(d_o + reach), reach ≤ tol
-            const double m = 1.0 + 1.0 / kBeyondTaper;
-            out[k++] = Affine{ns - m * no, m * (co + tol) - cs};
-        } else
-            out[k++] = Affine{ns - no, co - cs + tol};
+        out[k++] = Affine{ns - no, co - cs + tol};
     }
     return k;
 }
@@ -84,7 +98,7 @@ bool may_act(const std::vector<Block>& blocks, const std::vector<SideFrames>& fr
         const Vec3& ns = g.normal[size_t(s)];
         if (!(nh.dot(ns) < -1e-3 + turn)) continue;
         if (!may_be_target(blocks, h, hit_side, t, s, nh, ns, turn)) continue;
-        const int side_count = side_constraints(g, s, nh, true, cons);
+        const int side_count = side_constraints(g, s, nh, true, cons, &hq, nullptr, reach);
         if (missed(0, side_count)) continue;   // the side's planes first: most faces stop here
         int nc = side_count;
         if (tb.mesh.side_grid[size_t(s)].size() == 1) {

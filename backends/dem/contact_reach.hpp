@@ -25,10 +25,11 @@ constexpr int kMaxSideConstraints = 16;
 /// The affine constraints of target side s that do not depend on the target face (docs/dem.md,
 /// overlap scheme): behind every other side plane (flush within flush_tol) and not entering
 /// through another side. `hit_normal` is the hitting side's outward unit normal; `loose` gives
-/// every entering constraint the closer tolerance whatever the hitting normal, widened to cover the
-/// region beyond a capped cut, d_s ≤ (1 + 1/κ)(d_o + closer tolerance) (the refresh's bound over
-/// any orientation the blocks reach). With `hit_face`, the closer tolerance of a side o
-/// the hitting side does not face is at most how far the face's corners reach behind o's plane.
+/// every entering constraint the closer tolerance whatever the hitting normal (the refresh's bound
+/// over any orientation the blocks reach), widened to cover the region beyond a capped cut where
+/// `hit_face` may be capped while its points move up to `motion` (m) relative to the target.
+/// Otherwise, with `hit_face`, the closer tolerance of a side o the hitting side does not face is
+/// at most how far the face's corners reach behind o's plane.
 /// Returns the count written to `out`.
 /// A closer constraint whose tolerance is the hitting face's reach behind side o: its offset moves
 /// with the face's corner `corner` (index into the face's quad) along o's outward normal.
@@ -39,7 +40,7 @@ struct ReachCap {
 
 int side_constraints(const PairGeometry& g, int s, const Vec3& hit_normal, bool loose,
                      std::array<Affine, kMaxSideConstraints>& out, const Quad* hit_face = nullptr,
-                     std::array<ReachCap, kMaxSideConstraints>* caps = nullptr);
+                     std::array<ReachCap, kMaxSideConstraints>* caps = nullptr, double motion = 0.0);
 
 /// true when hitting face f of block h may act on block t at some step before the next refresh,
 /// while no point of either block moves more than half of `margin` (m) nor turns more than
