@@ -41,25 +41,17 @@ void clip(ClipPolygon& poly, const Affine& g, int label) {
     for (int i = 0; i < out.n; ++i) poly.p[i] = out.p[i], poly.by[i] = out.by[i];
 }
 
-OverlapIntegrals integrate_depth(const ClipPolygon& poly, const Vec3& c, const Vec3& n) {
+OverlapIntegrals fan_integrals(const Vec3* x, const double* h, const double* d, const Vec3* m, int count, const Vec3& n) {
     OverlapIntegrals r;
-    if (poly.n < 3) return r;
-    // projected vertices and their depths
-    std::array<Vec3, ClipPolygon::kMaxVertices> x;
-    std::array<double, ClipPolygon::kMaxVertices> d;
-    for (int i = 0; i < poly.n; ++i) {
-        d[i] = n.dot(c - poly.p[i]);
-        x[i] = poly.p[i] + d[i] * n;
-    }
     // fan from vertex 0; over a triangle with barycentric λ, ∫λiλj dA = A(1 + δij)/12
-    for (int i = 1; i + 1 < poly.n; ++i) {
+    for (int i = 1; i + 1 < count; ++i) {
         const double a = 0.5 * (x[i] - x[0]).cross(x[i + 1] - x[0]).dot(n);
         const double s = d[0] + d[i] + d[i + 1];
         const double q = d[0] * d[0] + d[i] * d[i] + d[i + 1] * d[i + 1];
-        const Vec3 sx = x[0] + x[i] + x[i + 1];
-        const Vec3 xd = d[0] * x[0] + d[i] * x[i] + d[i + 1] * x[i + 1];
-        // a·∇d of the triangle, ∇λ_k = n × (opposite edge) / 2a
-        const Vec3 a_grad = 0.5 * n.cross(d[0] * (x[i + 1] - x[i]) + d[i] * (x[0] - x[i + 1]) + d[i + 1] * (x[i] - x[0]));
+        const Vec3 sx = m[0] + m[i] + m[i + 1];
+        const Vec3 xd = d[0] * m[0] + d[i] * m[i] + d[i + 1] * m[i + 1];
+        // a·∇h of the triangle, ∇λ_k = n × (opposite edge) / 2a
+        const Vec3 a_grad = 0.5 * n.cross(h[0] * (x[i + 1] - x[i]) + h[i] * (x[0] - x[i + 1]) + h[i + 1] * (x[i] - x[0]));
         r.tilt += a_grad * (s * s + q) / 12.0;
         r.slope += a_grad;
         r.area += a;
@@ -80,6 +72,18 @@ OverlapIntegrals integrate_depth(const ClipPolygon& poly, const Vec3& c, const V
     }
     if (r.area > 0.0) r.slope /= r.area;
     return r;
+}
+
+OverlapIntegrals integrate_depth(const ClipPolygon& poly, const Vec3& c, const Vec3& n) {
+    if (poly.n < 3) return OverlapIntegrals{};
+    // projected vertices and their depths
+    std::array<Vec3, ClipPolygon::kMaxVertices> x;
+    std::array<double, ClipPolygon::kMaxVertices> d;
+    for (int i = 0; i < poly.n; ++i) {
+        d[i] = n.dot(c - poly.p[i]);
+        x[i] = poly.p[i] + d[i] * n;
+    }
+    return fan_integrals(x.data(), d.data(), d.data(), x.data(), poly.n, n);
 }
 
 }  // namespace cairn::dem

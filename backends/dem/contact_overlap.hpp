@@ -60,4 +60,10 @@ struct OverlapIntegrals {
 /// normal n (triangle fan; exact for a planar polygon, since d is affine)
 OverlapIntegrals integrate_depth(const ClipPolygon& poly, const Vec3& c, const Vec3& n);
 
+/// the triangle fan behind integrate_depth: over a planar polygon of `count` vertices projected at
+/// x on a plane of unit normal n, heights h behind that plane (the slope and tilt are those of h),
+/// a depth d affine over the polygon (d1, d2) and points m carried in the moments (the projected
+/// points, or the polygon's own)
+OverlapIntegrals fan_integrals(const Vec3* x, const double* h, const double* d, const Vec3* m, int count, const Vec3& n);
+
 }  // namespace cairn::dem

@@ -6,9 +6,8 @@
 
 namespace cairn::dem {
 
-BeyondIntegrals integrate_beyond(const ClipPolygon& poly, const Vec3& c, const Vec3& n, const Affine& depth) {
-    BeyondIntegrals r;
-    if (poly.n < 3) return r;
+OverlapIntegrals integrate_beyond(const ClipPolygon& poly, const Vec3& c, const Vec3& n, const Affine& depth) {
+    if (poly.n < 3) return OverlapIntegrals{};
     // projected vertices, their heights behind the plane and their depths
     std::array<Vec3, ClipPolygon::kMaxVertices> x;
     std::array<double, ClipPolygon::kMaxVertices> h, d;
@@ -17,33 +16,8 @@ BeyondIntegrals integrate_beyond(const ClipPolygon& poly, const Vec3& c, const V
         x[size_t(i)] = poly.p[size_t(i)] + h[size_t(i)] * n;
         d[size_t(i)] = depth(poly.p[size_t(i)]);
     }
-    // fan from vertex 0; over a triangle with barycentric λ, ∫λiλj dA = A(1 + δij)/12, and the
-    // polygon's points p are affine in the projected ones
-    for (int i = 1; i + 1 < poly.n; ++i) {
-        const size_t i0 = 0, i1 = size_t(i), i2 = size_t(i + 1);
-        const double a = 0.5 * (x[i1] - x[i0]).cross(x[i2] - x[i0]).dot(n);
-        const double s = d[i0] + d[i1] + d[i2];
-        const double q = d[i0] * d[i0] + d[i1] * d[i1] + d[i2] * d[i2];
-        const Vec3 sp = poly.p[i0] + poly.p[i1] + poly.p[i2];
-        const Vec3 pd = d[i0] * poly.p[i0] + d[i1] * poly.p[i1] + d[i2] * poly.p[i2];
-        r.slope += 0.5 * n.cross(h[i0] * (x[i2] - x[i1]) + h[i1] * (x[i0] - x[i2]) + h[i2] * (x[i1] - x[i0]));
-        r.area += a;
-        r.d1 += a * s / 3.0;
-        r.d2 += a * (s * s + q) / 12.0;
-        r.moment += a * (pd + sp * s) / 12.0;
-        r.first += a * sp / 3.0;
-    }
-    // a hitting cell seen from the target runs clockwise: the signs of the fan follow its turn
-    if (r.area < 0.0) {
-        r.area = -r.area;
-        r.d1 = -r.d1;
-        r.d2 = -r.d2;
-        r.moment = -r.moment;
-        r.first = -r.first;
-        r.slope = -r.slope;
-    }
-    if (r.area > 0.0) r.slope /= r.area;
-    return r;
+    // the polygon's points are affine in the projected ones
+    return fan_integrals(x.data(), h.data(), d.data(), poly.p.data(), poly.n, n);
 }
 
 double apply_beyond(const BeyondCell& in, Block& hb, int f, Block& tb, int tf, std::vector<SubForce>* kept) {
@@ -113,7 +87,7 @@ double apply_beyond(const BeyondCell& in, Block& hb, int f, Block& tb, int tf, s
             bool past = false;
             for (int i = 0; i < poly.n; ++i) past = past || in.cons[q](poly.p[size_t(i)]) < 0.0;
             if (poly.n < 3 || !past) continue;
-            const BeyondIntegrals r = integrate_beyond(poly, in.c, in.n, depth);
+            const OverlapIntegrals r = integrate_beyond(poly, in.c, in.n, depth);
             if (!(r.d1 > 0.0) || !(r.area > 0.0)) continue;
             stored += 0.5 * in.kn * r.d2;
             d1 += r.d1;

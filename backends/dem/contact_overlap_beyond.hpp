@@ -27,16 +27,10 @@
 namespace cairn::dem {
 
 /// integrals over a polygon projected on the plane (c, n) of a depth d(p) = depth(p) that is not
-/// the depth behind that plane
-struct BeyondIntegrals {
-    double area = 0.0;             ///< projected area, m²
-    double d1 = 0.0;               ///< ∫ d dA, m³
-    double d2 = 0.0;               ///< ∫ d² dA, m⁴
-    Vec3 moment = Vec3::Zero();    ///< ∫ p d dA over the polygon's own points p (on the hitting face), m⁴
-    Vec3 first = Vec3::Zero();     ///< ∫ p dA, m³
-    Vec3 slope = Vec3::Zero();     ///< the gradient along the plane of the depth behind it (the face's tilt)
-};
-BeyondIntegrals integrate_beyond(const ClipPolygon& poly, const Vec3& c, const Vec3& n, const Affine& depth);
+/// the depth behind that plane: area, d1, d2 and slope as OverlapIntegrals (the slope and tilt are
+/// those of the polygon's own depth behind the plane), moment = ∫p·d dA and first = ∫p dA over the
+/// polygon's own points p (on the hitting face), m⁴ and m³
+OverlapIntegrals integrate_beyond(const ClipPolygon& poly, const Vec3& c, const Vec3& n, const Affine& depth);
 
 /// What one sub-cell of a hitting face needs to apply its regions beyond the capped cuts of target
 /// side s: the cell (unclipped; on a deformable hitting face its 4 triangles, each two neighbouring

@@ -140,23 +140,28 @@ void ContactSet::evaluate_overlap(std::vector<Block>& blocks, double dt, long be
                                 for (int a = 0; a < 4; ++a) nw.node[size_t(a)] = hb.mesh.faces[c.hit_face][size_t(a)], nw.w[size_t(a)] = w[size_t(a)];
                                 return nw;
                             };
+                            // piece k of the cell, unclipped: the cell itself, or its triangle k
+                            auto piece = [&](int k) {
+                                ClipPolygon poly;
+                                if (split) {
+                                    poly.n = 3;
+                                    poly.p[0] = grid[size_t(corner[size_t(k)])];
+                                    poly.p[1] = grid[size_t(corner[size_t((k + 1) % 4)])];
+                                    poly.p[2] = centre_p;
+                                } else {
+                                    poly.n = 4;
+                                    for (int i = 0; i < 4; ++i) poly.p[size_t(i)] = grid[size_t(corner[size_t(i)])];
+                                }
+                                return poly;
+                            };
                             if (capped) {
                                 std::array<ClipPolygon, 4> pieces;
                                 BeyondCell bc;
                                 bc.parts = parts;
                                 bc.pieces = &pieces;
                                 for (int k = 0; k < parts; ++k) {
-                                    ClipPolygon& piece = pieces[size_t(k)];
-                                    if (split) {
-                                        piece.n = 3;
-                                        piece.p[0] = grid[size_t(corner[size_t(k)])];
-                                        piece.p[1] = grid[size_t(corner[size_t((k + 1) % 4)])];
-                                        piece.p[2] = centre_p;
-                                        bc.piece_xi[size_t(k)] = triangle_xi(k);
-                                    } else {
-                                        piece.n = 4;
-                                        for (int i = 0; i < 4; ++i) piece.p[size_t(i)] = grid[size_t(corner[size_t(i)])];
-                                    }
+                                    pieces[size_t(k)] = piece(k);
+                                    if (split) bc.piece_xi[size_t(k)] = triangle_xi(k);
                                 }
                                 bc.cons = cons.data();
                                 bc.side_count = side_count;
@@ -176,15 +181,7 @@ void ContactSet::evaluate_overlap(std::vector<Block>& blocks, double dt, long be
                             bool any = false;
                             for (int k = 0; k < parts; ++k) {
                                 ClipPolygon& poly = polys[size_t(k)];
-                                if (split) {
-                                    poly.n = 3;
-                                    poly.p[0] = grid[size_t(corner[size_t(k)])];
-                                    poly.p[1] = grid[size_t(corner[size_t((k + 1) % 4)])];
-                                    poly.p[2] = centre_p;
-                                } else {
-                                    poly.n = 4;
-                                    for (int i = 0; i < 4; ++i) poly.p[size_t(i)] = grid[size_t(corner[size_t(i)])];
-                                }
+                                poly = piece(k);
                                 for (int q = 0; q < nc && poly.n >= 3; ++q) clip(poly, cons[size_t(q)], q);
                                 if (poly.n < 3) {
                                     poly.n = 0;

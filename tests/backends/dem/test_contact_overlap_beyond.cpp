@@ -44,7 +44,7 @@ TEST_CASE("the integrals beyond a cut match a fine quadrature", "[dem][contact]"
     poly.p[1] = on_face(0.3, 0.05);
     poly.p[2] = on_face(0.1, 0.25);
     const Affine depth{Vec3(0.2, -0.1, 0.3), 0.01};
-    const BeyondIntegrals r = integrate_beyond(poly, Vec3::Zero(), Vec3::UnitZ(), depth);
+    const OverlapIntegrals r = integrate_beyond(poly, Vec3::Zero(), Vec3::UnitZ(), depth);
     const int m = 400;
     double area = 0.0, d1 = 0.0, d2 = 0.0;
     Vec3 moment = Vec3::Zero();
