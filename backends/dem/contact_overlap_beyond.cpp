@@ -49,8 +49,8 @@ double apply_beyond(const BeyondCell& in, Block& hb, int f, Block& tb, int tf, s
     auto target_weights = [&](const Vec3& x, int side) {
         if (!tb.deformable) return node_weights(tb, tf, x);
         if (side < 0) return plane_weights(*in.target_face, tb.mesh.faces[tf], in.c, in.n, x);
-        const int of = tb.mesh.side_grid[size_t(side)][0];
-        return plane_weights(tb.face_quad(of), tb.mesh.faces[of], g.centre[size_t(side)], g.normal[size_t(side)], x);
+        // o's plane is that of its corners (SideFrames)
+        return plane_weights(tb.side_quad(side), tb.mesh.side_corners[size_t(side)], g.centre[size_t(side)], g.normal[size_t(side)], x);
     };
     // the depth beyond capped cut k, d_B = (1 + κ)(d_o + reach) − κ·d_s: behind its side o plus
     // the face's reach behind o, less κ times the depth past the cut

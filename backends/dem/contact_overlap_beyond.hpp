@@ -55,8 +55,8 @@ struct BeyondCell {
 /// kept in `kept` when given (hit face f of hb on target face tf of tb). A deformable hitting face
 /// takes each triangle's forces by their barycentric weights, without the tilt couple (as the
 /// region before the cut); a deformable target takes the forces along o's normal by the weights of
-/// o's face plane and the rest by those of the target face's (contact_pair.hpp, plane_weights), so
-/// its sides must be one face each
+/// o's plane (through its corners, as SideFrames) and the rest by those of the target face's plane
+/// (contact_pair.hpp, plane_weights)
 double apply_beyond(const BeyondCell& in, Block& hb, int f, Block& tb, int tf, std::vector<SubForce>* kept);
 
 }  // namespace cairn::dem

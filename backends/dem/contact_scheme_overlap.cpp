@@ -56,16 +56,10 @@ void ContactSet::evaluate_overlap(std::vector<Block>& blocks, double dt, long be
                     return false;
                 };
                 const int side_count = side_constraints(g, s, frames_[size_t(c.hit_block)].normal[size_t(hit_side)], false, cons, &hq, &caps);
-                // the region beyond a capped cut is kept (contact_overlap_beyond.hpp) where the
-                // target side is one face, and on a deformable target so is each capped cut's side
-                bool capped = false, beyond = tb.mesh.side_grid[size_t(s)].size() == 1;
-                for (int k = 0; k < side_count; ++k)
-                    if (caps[size_t(k)].corner >= 0) {
-                        capped = true;
-                        beyond = beyond && (!tb.deformable || tb.mesh.side_grid[size_t(caps[size_t(k)].side)].size() == 1);
-                    }
-                capped = capped && beyond;
-                // a capped cut that misses the face leaves it to the region beyond
+                // a capped cut keeps the region beyond it (contact_overlap_beyond.hpp): one that
+                // misses the face leaves it to that region
+                bool capped = false;
+                for (int k = 0; k < side_count; ++k) capped = capped || caps[size_t(k)].corner >= 0;
                 bool missed = false;
                 for (int k = 0; k < side_count && !missed; ++k)
                     if (!capped || caps[size_t(k)].corner < 0) missed = missed_by(cons.data() + k, cons.data() + k + 1);

@@ -3,6 +3,9 @@
 #include <catch2/catch.hpp>
 
 #include <cmath>
+#include <string>
+#include <utility>
+#include <vector>
 
 #include "dem/contact_overlap_beyond.hpp"
 #include "gradient_check.hpp"
@@ -18,7 +21,7 @@ namespace {
 // `deg` degrees about −x, then by `yaw` rad about z: A's edge between its bottom and +y sides lies
 // along x, 1.58 mm behind B's +y side and 3.16 mm + eps below B's top, so that near 45° A's +y side
 // lies on the bisector of B's top and +y sides (the collapsing wall of docs/dem.md, Energy)
-Scene edge_in_corner(double deg, double eps, double yaw = 0.0, const std::string& model = "rigid") {
+Scene edge_in_corner(double deg, double eps, double yaw = 0.0, const std::string& model = "rigid", int mesh = 1) {
     Scene s = test::stone_scene(0.6);
     s.contact.scheme = ContactScheme::overlap;
     s.contact.kn = 1e9;
@@ -26,7 +29,9 @@ Scene edge_in_corner(double deg, double eps, double yaw = 0.0, const std::string
     const Quat q = Quat(Eigen::AngleAxisd(yaw, Vec3::UnitZ())) * Quat(Eigen::AngleAxisd(-deg * M_PI / 180.0, Vec3::UnitX()));
     const Vec3 edge(0.2, 0.1 - 0.00158, 0.1 - 0.00316 - eps);
     add_box(s, "A", Vec3(0.4, 0.2, 0.2), edge - q * Vec3(0.0, 0.1, -0.1), false, q);
-    add_box(s, "B", Vec3(0.8, 0.2, 0.2), Vec3::Zero(), true);
+    // meshed, B is free (one contact evaluation does not move it), so that its sides are meshed too
+    add_box(s, "B", Vec3(0.8, 0.2, 0.2), Vec3::Zero(), mesh == 1);
+    for (auto& b : s.blocks) b.mesh.divisions = {mesh, mesh, mesh};
     apply_model(s, model);
     return s;
 }
@@ -72,7 +77,8 @@ TEST_CASE("the integrals beyond a cut match a fine quadrature", "[dem][contact]"
 }
 
 TEST_CASE("a brick turning through 45 degrees with its edge in the corner of another: the energy is continuous", "[dem][contact]") {
-    // rigid and deformable (hex8, one element each; B is fixed, so only A deforms)
+    // rigid and deformable (hex8, one element each with B fixed, or 2 × 2 × 2 with both free,
+    // their sides meshed)
     // A's +y side lies on the bisector of B's top and +y sides at 45°, where the cut between the
     // part of it measured from B's top and the rest runs parallel to it. Its region beyond the cut
     // keeps the energy continuous: between neighbouring poses U changes by no more than the
@@ -80,26 +86,26 @@ TEST_CASE("a brick turning through 45 degrees with its edge in the corner of ano
     // the factor for their change within the move). Dropped beyond the cut, U jumped by 1.85 J
     // (3.36 → 1.51 J) between 45.000° and 45.001°, and the cut's edge force reached 2.5 MN
     const double step_deg = 0.001;
-    for (const std::string model : {"rigid", "deformable"})
+    for (const auto& [model, mesh] : std::vector<std::pair<std::string, int>>{{"rigid", 1}, {"deformable", 1}, {"deformable", 2}})
     for (double eps : {-1e-5, 0.0, 1e-5}) {
-        test::BlockLoad before = test::block_load(edge_in_corner(44.98, eps, 0.0, model));
-        Vec3 centre_before = edge_in_corner(44.98, eps, 0.0, model).blocks[0].position;
+        test::BlockLoad before = test::block_load(edge_in_corner(44.98, eps, 0.0, model, mesh));
+        Vec3 centre_before = edge_in_corner(44.98, eps, 0.0, model, mesh).blocks[0].position;
         double largest = before.force.norm();
         for (int i = 1; i <= 40; ++i) {
             const double deg = 44.98 + i * step_deg;
-            const Scene s = edge_in_corner(deg, eps, 0.0, model);
+            const Scene s = edge_in_corner(deg, eps, 0.0, model, mesh);
             const test::BlockLoad at = test::block_load(s);
             const double moved = (s.blocks[0].position - centre_before).norm();
             const double work = 2.0 * (std::max(at.force.norm(), before.force.norm()) * moved +
                                        std::max(at.moment.norm(), before.moment.norm()) * step_deg * M_PI / 180.0);
-            INFO(model << ", eps " << eps << " m, " << deg << "°: U " << before.energy << " → " << at.energy << " J, work bound " << work << " J");
+            INFO(model << " " << mesh << "³, eps " << eps << " m, " << deg << "°: U " << before.energy << " → " << at.energy << " J, work bound " << work << " J");
             CHECK(std::abs(at.energy - before.energy) <= work);
             largest = std::max(largest, at.force.norm());
             before = at;
             centre_before = s.blocks[0].position;
         }
         // the joint's own force, kn∫d dA over the few mm² of the overlap, is 2.6-4.9 kN here
-        INFO(model << ", eps " << eps << " m: largest force " << largest << " N");
+        INFO(model << " " << mesh << "³, eps " << eps << " m: largest force " << largest << " N");
         CHECK(largest < 1e4);
     }
 }
