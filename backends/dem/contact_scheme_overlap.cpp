@@ -134,9 +134,9 @@ void ContactSet::evaluate_overlap(std::vector<Block>& blocks, double dt, long be
                                 for (int a = 0; a < 4; ++a) nw.node[size_t(a)] = hb.mesh.faces[c.hit_face][size_t(a)], nw.w[size_t(a)] = w[size_t(a)];
                                 return nw;
                             };
-                            // piece k of the cell, unclipped: the cell itself, or its triangle k
-                            auto piece = [&](int k) {
-                                ClipPolygon poly;
+                            // piece k of the cell, unclipped, into poly (its corners only): the cell
+                            // itself, or its triangle k
+                            auto piece = [&](int k, ClipPolygon& poly) {
                                 if (split) {
                                     poly.n = 3;
                                     poly.p[0] = grid[size_t(corner[size_t(k)])];
@@ -146,7 +146,6 @@ void ContactSet::evaluate_overlap(std::vector<Block>& blocks, double dt, long be
                                     poly.n = 4;
                                     for (int i = 0; i < 4; ++i) poly.p[size_t(i)] = grid[size_t(corner[size_t(i)])];
                                 }
-                                return poly;
                             };
                             if (capped) {
                                 std::array<ClipPolygon, 4> pieces;
@@ -154,7 +153,7 @@ void ContactSet::evaluate_overlap(std::vector<Block>& blocks, double dt, long be
                                 bc.parts = parts;
                                 bc.pieces = &pieces;
                                 for (int k = 0; k < parts; ++k) {
-                                    pieces[size_t(k)] = piece(k);
+                                    piece(k, pieces[size_t(k)]);
                                     if (split) bc.piece_xi[size_t(k)] = triangle_xi(k);
                                 }
                                 bc.cons = cons.data();
@@ -175,7 +174,7 @@ void ContactSet::evaluate_overlap(std::vector<Block>& blocks, double dt, long be
                             bool any = false;
                             for (int k = 0; k < parts; ++k) {
                                 ClipPolygon& poly = polys[size_t(k)];
-                                poly = piece(k);
+                                piece(k, poly);
                                 for (int q = 0; q < nc && poly.n >= 3; ++q) clip(poly, cons[size_t(q)], q);
                                 if (poly.n < 3) {
                                     poly.n = 0;
