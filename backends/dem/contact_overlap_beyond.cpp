@@ -50,7 +50,8 @@ double apply_beyond(const BeyondCell& in, Block& hb, int f, Block& tb, int tf, s
         if (!tb.deformable) return node_weights(tb, tf, x);
         if (side < 0) return plane_weights(*in.target_face, tb.mesh.faces[tf], in.c, in.n, x);
         // o's plane is that of its corners (SideFrames)
-        return plane_weights(tb.side_quad(side), tb.mesh.side_corners[size_t(side)], g.centre[size_t(side)], g.normal[size_t(side)], x);
+        const size_t o = size_t(side);
+        return plane_weights(tb.side_quad(side), tb.mesh.side_corners[o], g.centre[o], g.normal[o], x);
     };
     // the depth beyond capped cut k, d_B = (1 + κ)(d_o + reach) − κ·d_s: behind its side o plus
     // the face's reach behind o, less κ times the depth past the cut
