@@ -35,15 +35,9 @@ double apply_beyond(const BeyondCell& in, Block& hb, int f, Block& tb, int tf, s
         if (!split) return node_weights(hb, f, x);
         const ClipPolygon& t = (*in.pieces)[size_t(k)];
         const Vec3 tn = (t.p[1] - t.p[0]).cross(t.p[2] - t.p[0]).normalized();
-        const auto l = barycentric(x, t.p[0], t.p[1], t.p[2], tn);
-        NodeWeights w;
-        w.count = 4;
-        for (int a = 0; a < 4; ++a) w.node[size_t(a)] = hb.mesh.faces[f][size_t(a)];
-        for (int i = 0; i < 3; ++i) {
-            const auto qw = quad_weights(in.piece_xi[size_t(k)][size_t(i)]);
-            for (int a = 0; a < 4; ++a) w.w[size_t(a)] += l[size_t(i)] * qw[size_t(a)];
-        }
-        return w;
+        std::array<double, 4> w{};
+        add_triangle_weights({t.p[0], t.p[1], t.p[2]}, in.piece_xi[size_t(k)], x, tn, 1.0, w);
+        return face_node_weights(hb, f, w);
     };
     // the target's weights of a force at x along the normal of the target face (side < 0) or of side o
     auto target_weights = [&](const Vec3& x, int side) {
@@ -94,15 +88,14 @@ double apply_beyond(const BeyondCell& in, Block& hb, int f, Block& tb, int tf, s
             d1 += r.d1;
             // −kn·d_B·∇d_B at each point: at the depth-weighted centre of the points, its part
             // along o's normal and its part along the target face's on the target's weights of each
-            constexpr double eta = 1e-12;   // as in OverlapIntegrals::pressure_centre()
-            const Vec3 xb = (r.moment + eta * r.first) / (r.d1 + eta * r.area);
+            const Vec3 xb = r.pressure_centre();   // its moment is over the face's own points
             const NodeWeights wh = hit_weights(part, xb);
             put(wh, target_weights(xb, o), (1.0 + kappa) * in.kn * r.d1 * no);
             put(wh, target_weights(xb, -1), -kappa * in.kn * r.d1 * in.n);
             // a rigid face's projected area on the target plane changes as it turns: the couple
             // ½kn·n × ∫d_B²·∇h dA (∇h the gradient of the face's depth behind the plane), as a
             // pair of opposite forces (the target takes the opposite couple)
-            const Vec3 tau = 0.5 * in.kn * in.n.cross(r.d2 * r.slope);
+            const Vec3 tau = 0.5 * in.kn * in.n.cross(r.tilt);
             const double tn = tau.norm();
             if (!split && tn > 0.0) {
                 const Vec3 t = tau / tn;
@@ -133,9 +126,9 @@ double apply_beyond(const BeyondCell& in, Block& hb, int f, Block& tb, int tf, s
         NodeWeights wc;
         if (!split) wc = node_weights(hb, f, corner);
         else {
-            wc.count = 4;
-            for (int a = 0; a < 4; ++a) wc.node[size_t(a)] = hb.mesh.faces[f][size_t(a)];
-            wc.w[size_t(in.caps[q].corner)] = 1.0;
+            std::array<double, 4> w{};
+            w[size_t(in.caps[q].corner)] = 1.0;
+            wc = face_node_weights(hb, f, w);
         }
         put(wc, target_weights(corner, o), (1.0 + kappa) * in.kn * d1 * no);
     }

@@ -27,9 +27,9 @@
 namespace cairn::dem {
 
 /// integrals over a polygon projected on the plane (c, n) of a depth d(p) = depth(p) that is not
-/// the depth behind that plane: area, d1, d2 and slope as OverlapIntegrals (the slope and tilt are
-/// those of the polygon's own depth behind the plane), moment = ∫p·d dA and first = ∫p dA over the
-/// polygon's own points p (on the hitting face), m⁴ and m³
+/// the depth behind that plane: area, d1, d2 as OverlapIntegrals, slope the gradient of the
+/// polygon's own depth h behind the plane and tilt = ∫d²∇h dA, moment = ∫p·d dA and first = ∫p dA
+/// over the polygon's own points p (on the hitting face), m⁴ and m³
 OverlapIntegrals integrate_beyond(const ClipPolygon& poly, const Vec3& c, const Vec3& n, const Affine& depth);
 
 /// What one sub-cell of a hitting face needs to apply its regions beyond the capped cuts of target

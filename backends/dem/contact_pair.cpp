@@ -215,4 +215,20 @@ std::array<double, 3> barycentric(const Vec3& x, const Vec3& x0, const Vec3& x1,
     return {1.0 - l1 - l2, l1, l2};
 }
 
+void add_triangle_weights(const std::array<Vec3, 3>& t, const std::array<Vec2, 3>& xi, const Vec3& x, const Vec3& n,
+                          double scale, std::array<double, 4>& w) {
+    const auto l = barycentric(x, t[0], t[1], t[2], n);
+    for (int i = 0; i < 3; ++i) {
+        const auto nw = quad_weights(xi[size_t(i)]);
+        for (int a = 0; a < 4; ++a) w[size_t(a)] += scale * l[size_t(i)] * nw[size_t(a)];
+    }
+}
+
+NodeWeights face_node_weights(const Block& b, int face, const std::array<double, 4>& w) {
+    NodeWeights nw;
+    nw.count = 4;
+    for (int a = 0; a < 4; ++a) nw.node[size_t(a)] = b.mesh.faces[face][size_t(a)], nw.w[size_t(a)] = w[size_t(a)];
+    return nw;
+}
+
 }  // namespace cairn::dem

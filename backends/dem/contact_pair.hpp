@@ -117,4 +117,13 @@ NodeWeights plane_weights(const Quad& q, const std::array<int, 4>& nodes, const 
 /// barycentric coordinates of x in the triangle (x0, x1, x2), all on a plane of unit normal n
 std::array<double, 3> barycentric(const Vec3& x, const Vec3& x0, const Vec3& x1, const Vec3& x2, const Vec3& n);
 
+/// adds scale × the weights on a face's 4 nodes of point x of a planar triangle on the face to w:
+/// x's barycentric weights in the triangle (corners t, unit normal n), each corner spread by the
+/// face's bilinear weights at its natural coordinates xi
+void add_triangle_weights(const std::array<Vec3, 3>& t, const std::array<Vec2, 3>& xi, const Vec3& x, const Vec3& n,
+                          double scale, std::array<double, 4>& w);
+
+/// the 4 nodes of boundary face `face` of block b with weights w
+NodeWeights face_node_weights(const Block& b, int face, const std::array<double, 4>& w);
+
 }  // namespace cairn::dem

@@ -117,23 +117,6 @@ void ContactSet::evaluate_overlap(std::vector<Block>& blocks, double dt, long be
                             auto triangle_xi = [&](int k) {
                                 return std::array<Vec2, 3>{corner_xi(k), corner_xi((k + 1) % 4), centre_xi};
                             };
-                            // adds scale × (barycentric weights l on triangle k's corners, each
-                            // spread by the face's bilinear weights) to the face's node weights w
-                            auto add_triangle_weights = [&](int k, const std::array<double, 3>& l, double scale,
-                                                            std::array<double, 4>& w) {
-                                const auto txi = triangle_xi(k);
-                                for (int i = 0; i < 3; ++i) {
-                                    const auto nw = quad_weights(txi[size_t(i)]);
-                                    for (int a = 0; a < 4; ++a) w[size_t(a)] += scale * l[size_t(i)] * nw[size_t(a)];
-                                }
-                            };
-                            // the hitting face's 4 nodes with weights w
-                            auto hit_face_weights = [&](const std::array<double, 4>& w) {
-                                NodeWeights nw;
-                                nw.count = 4;
-                                for (int a = 0; a < 4; ++a) nw.node[size_t(a)] = hb.mesh.faces[c.hit_face][size_t(a)], nw.w[size_t(a)] = w[size_t(a)];
-                                return nw;
-                            };
                             // piece k of the cell, unclipped, into poly (its corners only): the cell
                             // itself, or its triangle k
                             auto piece = [&](int k, ClipPolygon& poly) {
@@ -253,10 +236,9 @@ void ContactSet::evaluate_overlap(std::vector<Block>& blocks, double dt, long be
                                         const Vec3 p = quad_point(hq, txi[size_t(i)]);
                                         x[size_t(i)] = p + nt.dot(ct - p) * nt;
                                     }
-                                    const auto l = barycentric(pk.pressure_centre(), x[0], x[1], x[2], nt);
-                                    add_triangle_weights(k, l, (pk.d1 + eta * pk.area) / total, w);
+                                    add_triangle_weights(x, txi, pk.pressure_centre(), nt, (pk.d1 + eta * pk.area) / total, w);
                                 }
-                                wh_n = hit_face_weights(w);
+                                wh_n = face_node_weights(hb, c.hit_face, w);
                             }
                             wt_n = tb.deformable ? plane_weights(tq, tb.mesh.faces[tf], ct, nt, xs) : node_weights(tb, tf, xs);
                             const Vec3 vrel = wh.velocity(hb) - wt.velocity(tb);
@@ -381,8 +363,8 @@ void ContactSet::evaluate_overlap(std::vector<Block>& blocks, double dt, long be
                                         const Vec3& x1 = grid[size_t(corner[size_t((k + 1) % 4)])];
                                         const Vec3 tn = (x1 - x0).cross(centre_p - x0).normalized();
                                         std::array<double, 4> w{};
-                                        add_triangle_weights(k, barycentric(e.point, x0, x1, centre_p, tn), 1.0, w);
-                                        eh = hit_face_weights(w);
+                                        add_triangle_weights({x0, x1, centre_p}, triangle_xi(k), e.point, tn, 1.0, w);
+                                        eh = face_node_weights(hb, c.hit_face, w);
                                     }
                                     const NodeWeights et = tb.deformable ? plane_weights(tq, tb.mesh.faces[tf], ct, nt, e.point) : node_weights(tb, tf, e.point);
                                     const SubForce edge{eh, et, e.force, nt, eh, et};
