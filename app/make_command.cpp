@@ -259,13 +259,18 @@ std::string arch_stiffness_warning(const ArchSpec& a, double kn, double density,
     const double number = kn * a.thickness / (density * g * a.radius);
     const double needed = arch_joint_stiffness_needed(ratio);
     if (ratio <= 1.0 || number >= 0.999 * needed) return {};   // 0.999: the table's own points pass
+    // the kn to suggest, rounded up to two significant digits (rounding to nearest could suggest the kn
+    // the scene already has)
+    const double kn_needed = needed * density * g * a.radius / a.thickness;
+    const double unit = std::pow(10.0, std::floor(std::log10(kn_needed)) - 1.0);
+    const double kn_suggested = std::ceil(kn_needed / unit * (1.0 - 1e-12)) * unit;
     std::ostringstream w;
     w.precision(3);
     w << "t/R = " << a.thickness / a.radius << " is " << ratio << " x the least t/R (" << least << ") of " << a.voussoirs
       << " voussoirs, and kn*t/(rho*g*R) = " << number << " is below the " << needed
       << " at which such arches were measured to stand on dem's compliant joints (docs/dem.md, \"An arch near its"
          " minimum thickness needs stiff joints\"): on dem it may collapse under its own weight while the rigid engines"
-         " keep it up; --kn " << needed * density * g * a.radius / a.thickness << " or more compares with rigid-joint"
+         " keep it up; --kn " << kn_suggested << " or more compares with rigid-joint"
          " limit analysis";
     return w.str();
 }
