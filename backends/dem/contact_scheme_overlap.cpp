@@ -286,7 +286,18 @@ void ContactSet::evaluate_overlap(std::vector<Block>& blocks, double dt, long be
                                 // the positions drifted with); laid at zero on first touch
                                 const bool lay = fresh || anchor->energy < 0.0;
                                 if (lay) anchor->u.setZero();
-                                const Vec3 vt_rel = vrel - vrel.dot(nt) * nt;
+                                const Vec3 vt_new = vrel - vrel.dot(nt) * nt;
+                                // the step's relative motion where the last force acted and where this
+                                // one acts (the clipped area's centroid runs across a face that lands,
+                                // lifts or turns): the offset grows with their mean
+                                Vec3 vt_old = vt_new;
+                                if (!lay) {
+                                    vt_old = anchor->shear_hit.velocity(hb) - anchor->shear_target.velocity(tb);
+                                    vt_old -= vt_old.dot(nt) * nt;
+                                }
+                                const Vec3 vt_rel = 0.5 * (vt_old + vt_new);
+                                const double energy_before = lay ? 0.0 : anchor->energy;
+                                const Vec3 fs_before = lay ? Vec3::Zero() : anchor->fs;
                                 Vec3 u_t = anchor->u - anchor->u.dot(nt) * nt + vt_rel * dt;
                                 // the spring's stiffness ks·A follows the contact area; the offset
                                 // is scaled so that a change of area neither makes nor takes spring
@@ -308,19 +319,21 @@ void ContactSet::evaluate_overlap(std::vector<Block>& blocks, double dt, long be
                                     // slip: the spring is capped at μ·Fn, the offset shrinks to match
                                     fs = cap * f_el / f_el.norm();
                                     const Vec3 u_new = -fs / ks_a;
-                                    // friction work over the step (the leapfrog step does a
-                                    // force's work by the trapezoid rule): ½ks·A·(u_old + u_new)·slip
-                                    tot.dissipated += 0.5 * ks_a * (u_old + u_new).dot(u_t - u_new);
                                     anchor->u = u_new;
                                     anchor->energy = 0.5 * fs.squaredNorm() / ks_a;
+                                    // friction work over the step: what the shear forces took from
+                                    // the blocks (the leapfrog step's trapezoid, each end's force
+                                    // times the motion where it acted) less what the spring kept
+                                    const double taken = -0.5 * dt * (fs_before.dot(vt_old) + fs.dot(vt_new));
+                                    tot.dissipated += taken - (anchor->energy - energy_before);
                                 } else {
                                     // stick: spring plus shear dashpot, trimmed so the sum stays ≤ μ·Fn
-                                    fs = f_el - ct_area * in.area * vt_rel;
+                                    fs = f_el - ct_area * in.area * vt_new;
                                     if (fs.norm() > cap) fs *= cap / fs.norm();
                                     anchor->u = u_t;
                                     anchor->energy = 0.5 * ks_a * u_t.squaredNorm();
                                     fds = fs - f_el;
-                                    tot.dissipated -= 0.5 * (anchor->fds + fds).dot(vt_rel) * dt;
+                                    tot.dissipated -= 0.5 * (anchor->fds.dot(vt_old) + fds.dot(vt_new)) * dt;
                                 }
                                 tot.stored += anchor->energy;
                             } else {
