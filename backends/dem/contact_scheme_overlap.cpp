@@ -290,11 +290,8 @@ void ContactSet::evaluate_overlap(std::vector<Block>& blocks, double dt, long be
                                 // the step's relative motion where the last force acted and where this
                                 // one acts (the clipped area's centroid runs across a face that lands,
                                 // lifts or turns): the offset grows with their mean
-                                Vec3 vt_old = vt_new;
-                                if (!lay) {
-                                    vt_old = anchor->shear_hit.velocity(hb) - anchor->shear_target.velocity(tb);
-                                    vt_old -= vt_old.dot(nt) * nt;
-                                }
+                                const Vec3 v_old = lay ? vrel : Vec3(anchor->shear_hit.velocity(hb) - anchor->shear_target.velocity(tb));
+                                const Vec3 vt_old = v_old - v_old.dot(nt) * nt;
                                 const Vec3 vt_rel = 0.5 * (vt_old + vt_new);
                                 const double energy_before = lay ? 0.0 : anchor->energy;
                                 const Vec3 fs_before = lay ? Vec3::Zero() : anchor->fs;
@@ -324,7 +321,7 @@ void ContactSet::evaluate_overlap(std::vector<Block>& blocks, double dt, long be
                                     // friction work over the step: what the shear forces took from
                                     // the blocks (the leapfrog step's trapezoid, each end's force
                                     // times the motion where it acted) less what the spring kept
-                                    const double taken = -0.5 * dt * (fs_before.dot(vt_old) + fs.dot(vt_new));
+                                    const double taken = -0.5 * dt * (fs_before.dot(v_old) + fs.dot(vt_new));
                                     tot.dissipated += taken - (anchor->energy - energy_before);
                                 } else {
                                     // stick: spring plus shear dashpot, trimmed so the sum stays ≤ μ·Fn
@@ -333,7 +330,7 @@ void ContactSet::evaluate_overlap(std::vector<Block>& blocks, double dt, long be
                                     anchor->u = u_t;
                                     anchor->energy = 0.5 * ks_a * u_t.squaredNorm();
                                     fds = fs - f_el;
-                                    tot.dissipated -= 0.5 * (anchor->fds.dot(vt_old) + fds.dot(vt_new)) * dt;
+                                    tot.dissipated -= 0.5 * (anchor->fds.dot(v_old) + fds.dot(vt_new)) * dt;
                                 }
                                 tot.stored += anchor->energy;
                             } else {
