@@ -24,8 +24,10 @@ double apply_beyond(const BeyondCell& in, Block& hb, int f, Block& tb, int tf, s
     const PairGeometry& g = *in.g;
     const Quad& face = *in.hit_face;
     const bool split = in.parts > 1;
-    auto put = [&](const NodeWeights& wh, const NodeWeights& wt, const Vec3& force) {
-        const SubForce sub{wh, wt, force, in.n, wh, wt};
+    // a force on both blocks at one point; `normal` only names its normal part in the output (the
+    // side it pushes on), both parts act at the same points
+    auto put = [&](const NodeWeights& wh, const NodeWeights& wt, const Vec3& force, const Vec3& normal) {
+        const SubForce sub{wh, wt, force, normal, wh, wt};
         if (kept) kept->push_back(sub);
         else sub.spread(hb, tb);
     };
@@ -90,8 +92,8 @@ double apply_beyond(const BeyondCell& in, Block& hb, int f, Block& tb, int tf, s
             // along o's normal and its part along the target face's on the target's weights of each
             const Vec3 xb = r.pressure_centre();   // its moment is over the face's own points
             const NodeWeights wh = hit_weights(part, xb);
-            put(wh, target_weights(xb, o), (1.0 + kappa) * in.kn * r.d1 * no);
-            put(wh, target_weights(xb, -1), -kappa * in.kn * r.d1 * in.n);
+            put(wh, target_weights(xb, o), (1.0 + kappa) * in.kn * r.d1 * no, no);
+            put(wh, target_weights(xb, -1), -kappa * in.kn * r.d1 * in.n, in.n);
             // a rigid face's projected area on the target plane changes as it turns: the couple
             // ½kn·n × ∫d_B²·∇h dA (∇h the gradient of the face's depth behind the plane), as a
             // pair of opposite forces (the target takes the opposite couple)
@@ -107,7 +109,7 @@ double apply_beyond(const BeyondCell& in, Block& hb, int f, Block& tb, int tf, s
                 const double arm = hb.min_edge;
                 for (const double side : {0.5, -0.5}) {
                     const Vec3 x = xb + side * arm * w;
-                    put(node_weights(hb, f, x), node_weights(tb, tf, x), (2.0 * side * tn / arm) * e);
+                    put(node_weights(hb, f, x), node_weights(tb, tf, x), (2.0 * side * tn / arm) * e, in.n);
                 }
             }
             // where the region ends on a constraint fixed to the target with depth: the edge
@@ -117,7 +119,7 @@ double apply_beyond(const BeyondCell& in, Block& hb, int f, Block& tb, int tf, s
                 if (cut < 0 || cut >= in.count || cut == in.side_count) continue;
                 if (cut < in.side_count && in.caps[cut].corner >= 0) continue;
                 const EdgeForce e = edge_force(poly, i, in.c, in.n, cons[size_t(cut)], r.slope, in.kn, &depth);
-                if (!e.force.isZero(0.0)) put(hit_weights(part, e.point), target_weights(e.point, -1), e.force);
+                if (!e.force.isZero(0.0)) put(hit_weights(part, e.point), target_weights(e.point, -1), e.force, e.force.normalized());
             }
         }
         if (!(d1 > 0.0)) continue;
@@ -130,7 +132,7 @@ double apply_beyond(const BeyondCell& in, Block& hb, int f, Block& tb, int tf, s
             w[size_t(in.caps[q].corner)] = 1.0;
             wc = face_node_weights(hb, f, w);
         }
-        put(wc, target_weights(corner, o), (1.0 + kappa) * in.kn * d1 * no);
+        put(wc, target_weights(corner, o), (1.0 + kappa) * in.kn * d1 * no, no);
     }
     return stored;
 }

@@ -377,7 +377,7 @@ void ContactSet::evaluate_overlap(std::vector<Block>& blocks, double dt, long be
                                         eh = face_node_weights(hb, c.hit_face, w);
                                     }
                                     const NodeWeights et = tb.deformable ? plane_weights(tq, tb.mesh.faces[tf], ct, nt, e.point) : node_weights(tb, tf, e.point);
-                                    const SubForce edge{eh, et, e.force, nt, eh, et};
+                                    const SubForce edge{eh, et, e.force, e.force.normalized(), eh, et};   // a push off the edge: all normal
                                     if (keep_forces) c.sub_forces.push_back(edge);
                                     else edge.spread(hb, tb);
                                     // a closer constraint capped at the face's reach behind o moves
@@ -387,7 +387,8 @@ void ContactSet::evaluate_overlap(std::vector<Block>& blocks, double dt, long be
                                     if (cut < side_count && caps[size_t(cut)].corner >= 0) {
                                         const Vec3& cp = hq[size_t(caps[size_t(cut)].corner)];
                                         const NodeWeights ch = node_weights(hb, c.hit_face, cp), ctw = node_weights(tb, tf, cp);
-                                        const SubForce cap{ch, ctw, e.offset_gradient * g.normal[size_t(caps[size_t(cut)].side)], nt, ch, ctw};
+                                        const Vec3& no = g.normal[size_t(caps[size_t(cut)].side)];   // it pushes on o
+                                        const SubForce cap{ch, ctw, e.offset_gradient * no, no, ch, ctw};
                                         if (keep_forces) c.sub_forces.push_back(cap);
                                         else cap.spread(hb, tb);
                                     }

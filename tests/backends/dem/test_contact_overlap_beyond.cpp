@@ -128,3 +128,32 @@ TEST_CASE("a brick with its edge in the corner of another, partly beyond the cut
     CHECK(g.force < 1e-7);
     CHECK(g.moment < 1e-7);
 }
+
+TEST_CASE("the region beyond a capped cut and the edge forces are output as pushes, not as shear", "[dem][contact]") {
+    // the pose of the gradient test above: A's +y side is measured from B's top (the target face,
+    // normal +z) up to the cut and from B's +y side beyond it. The region beyond pushes A along
+    // B's +y normal (3.0 kN), and the edge forces where the overlap ends on B's top edge push
+    // across that edge, in the top's plane. The contact output splits each force along its
+    // SubForce's normal: named by the target face's normal, these showed as 1.3 kN of shear on
+    // B's top along y, with ks = 0 (no shear spring at all)
+    const Scene s = edge_in_corner(45.02, 3e-4, -0.0017);
+    std::vector<Block> blocks;
+    for (const auto& d : s.blocks) blocks.push_back(make_block(d, s));
+    ContactSet cs;
+    cs.configure(s.contact, 0.05);
+    cs.keep_forces(true);
+    cs.refresh(blocks);
+    cs.apply(blocks, 1e-4);
+    double pushed_y = 0.0, shear = 0.0;   // N: normal parts on B's +y side; |shear parts|
+    for (const auto& c : cs.candidates())
+        for (const SubForce& f : c.sub_forces) {
+            const Vec3 fn = f.force.dot(f.normal) * f.normal;
+            if (f.normal.isApprox(Vec3::UnitY(), 1e-9)) pushed_y += fn.y();
+            shear += (f.force - fn).norm();
+        }
+    INFO(pushed_y << " N pushed on B's +y side, " << shear << " N of shear parts");
+    CHECK(pushed_y > 1e3);
+    // the shear parts left: the rigid tilt couple's pair of opposite forces in the top's plane
+    // (a couple, not a friction force) and rounding
+    CHECK(shear < 0.05 * pushed_y);
+}
