@@ -4,6 +4,9 @@
 #include <cmath>
 #include <memory>
 #include <sstream>
+#include <string>
+#include <utility>
+#include <vector>
 
 #include "error.hpp"
 #include "time_step.hpp"
@@ -16,6 +19,19 @@
 namespace cairn {
 
 namespace {
+
+/// "block A", "blocks A, B, C", or for more than six "40 blocks (A, B, C, … Z)"
+std::string block_list_note(const std::vector<std::string>& names) {
+    constexpr size_t kListed = 6;
+    if (names.size() == 1) return "block " + names[0];
+    std::string s;
+    if (names.size() <= kListed) {
+        for (const auto& name : names) s += (s.empty() ? "" : ", ") + name;
+        return "blocks " + s;
+    }
+    for (size_t i = 0; i + 1 < kListed; ++i) s += names[i] + ", ";
+    return std::to_string(names.size()) + " blocks (" + s + "… " + names.back() + ")";
+}
 
 /// true when something can set a block sliding: a load (ground motion included) or a block
 /// thrown or spun at t = 0
@@ -162,15 +178,21 @@ public:
             return o.str();
         };
         n.push_back("integrator: central differences (kick-drift-kick); rigid blocks rotate by implicit midpoint");
+        // the free blocks' models, blocks of one model in one note (a generated wall of 10⁴ bricks
+        // gets one line, not 10⁴), in the order each model first appears
+        std::vector<std::pair<std::string, std::vector<std::string>>> models;
         for (const auto& b : scene_.blocks) {
             if (b.fixed) continue;
-            std::string m = "block " + b.name + ": " + to_string(b.model);
+            std::string m = to_string(b.model);
             if (b.model == BlockModel::deformable)
                 m += ", " + std::to_string(b.mesh.divisions[0]) + "x" + std::to_string(b.mesh.divisions[1]) + "x" +
                      std::to_string(b.mesh.divisions[2]) + " hex8 (St. Venant-Kirchhoff, 2x2x2 Gauss), mass " +
                      to_string(b.mesh.mass);
-            n.push_back(m);
+            auto it = std::find_if(models.begin(), models.end(), [&](const auto& e) { return e.first == m; });
+            if (it == models.end()) models.push_back({m, {b.name}});
+            else it->second.push_back(b.name);
         }
+        for (const auto& [model, names] : models) n.push_back(block_list_note(names) + ": " + model);
         n.push_back("critical step of the contact springs (s): " + num(contact_critical_));
         if (element_critical_ > 0.0) n.push_back("critical step of the elements (s): " + num(element_critical_));
         n.push_back("time step (s): " + num(dt_) + (scene_.run.dt ? " (given)" : " (auto)"));

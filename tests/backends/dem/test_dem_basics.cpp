@@ -5,6 +5,7 @@
 #include <algorithm>
 
 #include <cmath>
+#include <string>
 #include <vector>
 
 #include "analytic/oracles.hpp"
@@ -200,3 +201,19 @@ TEST_CASE("a meshed block in contact gives the same bits on 1 and 2 threads", "[
     CHECK(one_o == two_o);
 }
 #endif
+
+TEST_CASE("run notes name each model once, with the blocks that have it", "[dem]") {
+    // a generated wall of 10⁴ bricks wrote one note per brick into run.json; now one per model
+    Scene s = test::stone_scene();
+    for (int i = 0; i < 8; ++i) test::add_box(s, "b" + std::to_string(i), Vec3(0.4, 0.2, 0.2), Vec3(0.5 * i, 0, 0.1), false);
+    test::add_box(s, "C", Vec3(0.4, 0.4, 0.4), Vec3(0, 2, 0.2), false);
+    s.blocks.back().model = BlockModel::deformable;
+    test::add_box(s, "base", Vec3(6, 4, 0.5), Vec3(2, 1, -0.25), true);
+    auto b = test::build_dem(s);
+    std::vector<std::string> models;
+    for (const auto& n : b->notes())
+        if (n.find(": rigid") != std::string::npos || n.find(": deformable") != std::string::npos) models.push_back(n);
+    REQUIRE(models.size() == 2);
+    CHECK(models[0] == "8 blocks (b0, b1, b2, b3, b4, … b7): rigid");
+    CHECK(models[1].rfind("block C: deformable, 1x1x1 hex8", 0) == 0);
+}
