@@ -1,9 +1,12 @@
 #include "rigid_blocks.hpp"
 
 #include <Eigen/Eigenvalues>
+#include <algorithm>
 #include <cmath>
 
 #include "error.hpp"
+#include "geometry/hexahedron.hpp"
+#include "geometry/spring_bed.hpp"
 
 namespace cairn {
 
@@ -107,6 +110,27 @@ double bearing_area(const RigidBlock& b, const Quat& q, const Vec3& out) {
         if (b.face_normals[f].dot(local) >= best - 1e-9 && (area == 0.0 || b.face_areas[f] < area))
             area = b.face_areas[f];
     return area;
+}
+
+double matched_spring_omega(const Scene& scene, const std::vector<RigidBlock>& blocks) {
+    std::vector<double> w2;
+    for (const RigidBlock& b : blocks) {
+        if (b.fixed) continue;
+        const Mat3 r = b.orientation.toRotationMatrix();
+        const Mat3 inertia = r * b.inertia * r.transpose();
+        double most = 0.0;
+        for (size_t f = 0; f < 6; ++f) {
+            std::vector<BedSpring> springs;
+            for (int k : kFaceCorners[f])
+                springs.push_back({block_point_world(b, b.com_world, b.orientation, b.corners[size_t(k)]), 0.25 * b.face_areas[f]});
+            most = std::max(most, spring_bed_omega2(springs, b.orientation * b.face_normals[f], scene.contact.kn,
+                                                    scene.contact.ks, b.com_world, b.mass, inertia));
+        }
+        w2.push_back(most);
+    }
+    if (w2.empty()) return 0.0;
+    std::sort(w2.rbegin(), w2.rend());
+    return std::sqrt(w2.size() > 1 ? w2[0] + w2[1] : w2[0]);
 }
 
 PointSpring matched_point_spring(const Scene& scene, const RigidBlock& a, const Quat& qa, const RigidBlock& b,

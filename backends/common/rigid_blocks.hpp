@@ -64,6 +64,12 @@ double bearing_area(const RigidBlock& b, const Quat& q, const Vec3& out);
 PointSpring matched_point_spring(const Scene& scene, const RigidBlock& a, const Quat& qa, const RigidBlock& b,
                                  const Quat& qb, const Vec3& n, int points = 4);
 
+/// the stiffest angular frequency (rad/s) of the scene's matched springs: each free block on any
+/// of its faces with kn·A/4 and ks·A/4 at the face's corners (MuJoCo's four contacts a face),
+/// and for two or more free blocks the two stiffest pressed together (their ω² summed, as dem's
+/// critical step bounds a pair); 0 without a free block
+double matched_spring_omega(const Scene& scene, const std::vector<RigidBlock>& blocks);
+
 /// the notes every velocity-level rigid-body engine adds for a scene: what it ignores (ks, β)
 /// and what its energy columns hold
 std::vector<std::string> rigid_engine_notes(const Scene& scene);

@@ -1,53 +1,31 @@
 #include "time_step.hpp"
 
-#include <Eigen/Eigenvalues>
 #include <algorithm>
 #include <cmath>
 
 #include "broad_phase.hpp"
+#include "geometry/spring_bed.hpp"
 
 namespace cairn::dem {
 
 double side_contact_omega2(const Block& b, int side, const ContactLaw& law) {
-    using Mat6 = Eigen::Matrix<double, 6, 6>;
-    using Vec6 = Eigen::Matrix<double, 6, 1>;
     const Quad q = b.side_quad(side);
     const Vec3 n = quad_normal(q, Vec2::Zero());
-    const Vec3 t1 = n.unitOrthogonal(), t2 = n.cross(t1);
-    Mat6 k = Mat6::Zero();
     // the springs of a whole side: the paper's hitting points, or (overlap scheme) the exact
     // integral over the side, which 2×2 Gauss points give for the quadratic integrand
-    std::vector<HitPoint> springs;
+    std::vector<HitPoint> hits;
     if (law.scheme == ContactScheme::paper) {
-        springs = hit_grid(q, law.grid_spacing);
+        hits = hit_grid(q, law.grid_spacing);
     } else {
         const double gp = 1.0 / std::sqrt(3.0), area = quad_area(q);
         for (double u : {-gp, gp})
-            for (double v : {-gp, gp}) springs.push_back({Vec2(u, v), 0.25 * area});
+            for (double v : {-gp, gp}) hits.push_back({Vec2(u, v), 0.25 * area});
     }
-    for (const auto& p : springs) {
-        Vec3 r = quad_point(q, p.xi) - b.body.x;
-        auto add = [&](const Vec3& d, double stiff) {
-            Vec6 g;
-            g << d, r.cross(d);
-            k += stiff * p.area * g * g.transpose();
-        };
-        add(n, law.kn);
-        add(t1, law.ks);
-        add(t2, law.ks);
-    }
-    // M^{-1/2} K M^{-1/2} with M = diag(m, I_world)
-    Mat3 rot = b.body.q.toRotationMatrix();
-    Mat3 iw = rot * b.body.inertia_body * rot.transpose();
-    Eigen::SelfAdjointEigenSolver<Mat3> ei(iw);
-    Mat3 iw_inv_sqrt = ei.eigenvectors() * ei.eigenvalues().cwiseSqrt().cwiseInverse().asDiagonal() *
-                       ei.eigenvectors().transpose();
-    Mat6 s = Mat6::Zero();
-    s.topLeftCorner<3, 3>() = Mat3::Identity() / std::sqrt(b.body.mass);
-    s.bottomRightCorner<3, 3>() = iw_inv_sqrt;
-    Mat6 a = s * k * s;
-    Eigen::SelfAdjointEigenSolver<Mat6> es(a, Eigen::EigenvaluesOnly);
-    return es.eigenvalues().maxCoeff();
+    std::vector<BedSpring> springs;
+    springs.reserve(hits.size());
+    for (const auto& p : hits) springs.push_back({quad_point(q, p.xi), p.area});
+    const Mat3 rot = b.body.q.toRotationMatrix();
+    return spring_bed_omega2(springs, n, law.kn, law.ks, b.body.x, b.body.mass, rot * b.body.inertia_body * rot.transpose());
 }
 
 double contact_critical_step(const std::vector<Block>& blocks, const ContactLaw& law, double reach) {

@@ -104,6 +104,7 @@ private:
     mjData* d_ = nullptr;
     bool matched_ = false;
     double dt_ = 0.0;
+    bool stiff_step_ = false;   // dt = auto shortened below the default for the matched springs
     double external_work_ = 0.0;
     std::string failure_;
     std::vector<std::string> notes_;
@@ -135,8 +136,14 @@ void MujocoBackend::build(const Scene& scene, const RunOptions& options) {
     p.solref[1] = settings.number("dampratio", 1.0, 0.0);
     settings.finish();
     if (p.impedance > 0.9999) throw Error("mujoco setting 'impedance' must be at most 0.9999");
-    dt_ = p.dt = engine_time_step(scene_);
     blocks_ = rigid_blocks(scene_, "mujoco");
+    dt_ = engine_time_step(scene_);
+    // matched springs stiffer than the default step resolves (ω·dt above 1: small blocks, a stiff
+    // kn) blow MuJoCo's semi-implicit step up; dt = auto then takes 1/ω
+    const double omega = matched_ ? matched_spring_omega(scene_, blocks_) : 0.0;
+    stiff_step_ = !scene_.run.dt && omega * dt_ > 1.0;
+    if (stiff_step_) dt_ = 1.0 / omega;
+    p.dt = dt_;
 
     // constraint storage: 4 contacts per touching pair (candidates from inflated bounds), and
     // 4 rows per contact (pyramid) or 3 (elliptic)
@@ -235,7 +242,10 @@ void MujocoBackend::build(const Scene& scene, const RunOptions& options) {
     auto note = [&](std::ostringstream& s) { notes_.push_back(s.str()); s.str(""); };
     n << "contact_mode: " << (matched_ ? "matched" : "rigid");
     note(n);
-    n << "time_step: " << dt_ << " s" << (scene_.run.dt ? "" : " (dt = auto: engine default 1e-4 s)");
+    n << "time_step: " << dt_ << " s"
+      << (scene_.run.dt ? ""
+          : stiff_step_ ? " (dt = auto: 1/omega of the stiffest matched spring, below the engine default 1e-4 s)"
+                        : " (dt = auto: engine default 1e-4 s)");
     note(n);
     n << "solver: Newton, " << p.iterations << " iterations, tolerance " << p.tolerance << ", Euler integrator, "
       << p.cone << " friction cone, margin 0, njmax " << p.njmax << ", nconmax " << p.nconmax;
