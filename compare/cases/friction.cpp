@@ -110,17 +110,34 @@ void check_friction(const Scene& scene) {
         throw Error(key + why + "; the friction reference (a block on a Winkler base in the plane of the push) "
                                 "leaves out the base's resistance to torsion");
     }
-    // upright, and pushed along one of its sides
+    // upright; held, pushed along one of its sides (the Winkler block lies in the push's vertical
+    // plane); sliding, in any direction (Coulomb's friction is isotropic: (H/W − μ)g along the push)
+    const bool slides = scene.reference->kind == "slide";
     const Vec3 ax = b.orientation * Vec3::UnitX(), ay = b.orientation * Vec3::UnitY(), az = b.orientation * Vec3::UnitZ();
-    if (std::abs(az.dot(up)) < 1 - 1e-9 || std::min(1 - std::abs(ax.dot(d)), 1 - std::abs(ay.dot(d))) > 1e-9)
-        throw Error(key + "the block is not upright with a side along the push; the friction reference models a "
-                          "block pushed along one of its sides on a horizontal base");
+    const bool along_side = std::min(1 - std::abs(ax.dot(d)), 1 - std::abs(ay.dot(d))) <= 1e-9;
+    if (std::abs(az.dot(up)) < 1 - 1e-9)
+        throw Error(key + "the block is not upright; the friction reference models a block on its base on a "
+                          "horizontal base");
+    if (!slides && !along_side)
+        throw Error(key + "the push is not along a side of the block; the stick reference models a block pushed "
+                          "along one of its sides (the Winkler block in the push's vertical plane)");
     // the base's reaction must stay inside the base: held, W·e = H·h (on springs plus the weight's
-    // shift over the tilt); sliding at (H − μW)/m, W·e = H·h − (H − μW)·h_c
+    // shift over the tilt); sliding at (H − μW)/m, W·e = H·h − (H − μW)·h_c. Along a side the base
+    // runs half its width from the centre; at an angle to the sides, to the nearer of the two
+    // edges the push's line crosses, min(a/|cos|, b/|sin|) with a, b the base's half sides
     double h = 0.0;
     const auto wb = winkler(scene, &h);
-    const double W = wb.weight, half = 0.5 * wb.width;
-    const bool slides = scene.reference->kind == "slide";
+    double half = 0.5 * wb.width;
+    if (!along_side) {
+        const Vec3 centre_w = b.orientation * centre;
+        double a_half = 0.0, b_half = 0.0;
+        for (const auto& c : b.corners) {
+            const Vec3 r = b.orientation * c - centre_w;
+            a_half = std::max(a_half, std::abs(r.dot(ax))), b_half = std::max(b_half, std::abs(r.dot(ay)));
+        }
+        half = std::min(a_half / std::abs(ax.dot(d)), b_half / std::abs(ay.dot(d)));
+    }
+    const double W = wb.weight;
     const double e = slides ? (H * h - (H - wb.mu * W) * wb.com_height) / W : H * h / W;
     const double on_springs = slides ? e : std::abs(wb.eccentricity(H, h));
     if (std::abs(e) >= half || !(on_springs < half)) {

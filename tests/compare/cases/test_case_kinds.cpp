@@ -289,10 +289,25 @@ TEST_CASE("every shipped scene passes its kind's check; a drive a kind's oracle 
     upper.point.z() += 0.1, lower.point.z() -= 0.1;
     split.loads = {upper, lower};
     CHECK_THAT(refusal(split), Catch::Contains("different heights"));
-    // pushed at an angle to its sides: its base's corner lifts, not an edge
+    // held, pushed at an angle to its sides: its base's corner lifts, not an edge
     Scene angled = shipped("paper/friction_stick");
     angled.blocks.at(size_t(angled.reference->block)).orientation = Quat(Eigen::AngleAxisd(0.3, Vec3::UnitZ()));
-    CHECK_THAT(refusal(angled), Catch::Contains("a side along the push"));
+    CHECK_THAT(refusal(angled), Catch::Contains("not along a side"));
+    // sliding at an angle to its sides is modelled (Coulomb's friction is isotropic); pushed at its
+    // top, its base's reaction may run to the edge the push's line crosses, min(a/|cos|, b/|sin|):
+    // 0.25/cos 0.5 = 0.2849 m for the 0.5 m cube turned 0.5 rad. By 0.85 W at μ = 0.25 it falls
+    // 0.425 − 0.6·0.25 = 0.275 m out: past the 0.25 m half-base pushed along a side, inside turned
+    Scene oblique = shipped("paper/friction_slide");
+    CHECK(refusal(oblique).empty());
+    const double oblique_weight = oblique.reference->values.at("force") / 0.5;
+    oblique.loads.front().point = Vec3(0, 0, 0.25);
+    oblique.contact.friction = 0.25;
+    oblique.loads.front().force.x() = oblique.reference->values["force"] = 0.85 * oblique_weight;
+    CHECK_THAT(refusal(oblique), Catch::Contains("tips the block as it slides"));
+    oblique.blocks.at(size_t(oblique.reference->block)).orientation = Quat(Eigen::AngleAxisd(0.5, Vec3::UnitZ()));
+    CHECK(refusal(oblique).empty());
+    oblique.loads.front().force.x() = oblique.reference->values["force"] = 0.9 * oblique_weight;   // 0.2875 m
+    CHECK_THAT(refusal(oblique), Catch::Contains("tips the block as it slides"));
     // pushed at its top (0.5 m above its base) by 0.55 W: H·h/W = 0.275 m > B/2, it tips; by 0.45 W
     // on kn = 1e9 it holds with the reaction 0.2256 m out (0.225 plus the weight's shift h_c·θ)
     Scene tipped = shipped("paper/friction_stick");
