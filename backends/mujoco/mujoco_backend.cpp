@@ -546,7 +546,7 @@ BackendInfo mujoco_backend_info() {
     info.name = "mujoco";
     info.description = "MuJoCo 2.2.2 rigid bodies (soft constraints); contact rigid or matched (calibrated solref)";
     info.capabilities = mujoco_capabilities();
-    info.solver = "solref 0.002, pyramidal cone";
+    info.solver = "solref 0.002, elliptic cone";
     info.make = [] { return std::make_unique<MujocoBackend>(); };
     return info;
 }
