@@ -1,6 +1,10 @@
 #include "scene/house_builder.hpp"
 
 #include <cmath>
+#include <sstream>
+#include <string>
+
+#include "error.hpp"
 
 namespace cairn {
 
@@ -19,9 +23,36 @@ std::vector<Opening> house_openings(const HouseSpec& house) {
     return out;
 }
 
+namespace {
+
+std::string metres(double x) {
+    std::ostringstream o;
+    o << x << " m";
+    return o.str();
+}
+
+/// refuses a door or windows that do not fit the house's courses, naming the options that set them
+/// (the tower's own check would call them openings 0 and 1 and the house a tower)
+void check_door_and_windows(const HouseSpec& house, const std::vector<Opening>& holes) {
+    const int courses = house.walls.courses;
+    const std::string of = " the house's " + std::to_string(courses) + " courses of " + metres(house.walls.brick_height);
+    const Opening& door = holes[0];
+    if (door.course_to < 1 || door.course_to > courses)
+        throw Error("the door (--door-height " + metres(house.door_height) + ", " + std::to_string(door.course_to) +
+                    " courses) does not fit" + of + ": lower it or add --courses");
+    const Opening& window = holes[1];
+    if (window.course_to <= window.course_from || window.course_to > courses)
+        throw Error("the windows (--window-sill " + metres(house.window_sill) + ", --window-height " +
+                    metres(house.window_height) + ": courses " + std::to_string(window.course_from) + " to " +
+                    std::to_string(window.course_to) + ") do not fit" + of + ": lower them or add --courses");
+}
+
+}  // namespace
+
 int add_house(Scene& scene, const HouseSpec& house) {
     TowerSpec t = house.walls;
     std::vector<Opening> holes = house_openings(house);
+    check_door_and_windows(house, holes);
     holes.insert(holes.end(), t.openings.begin(), t.openings.end());   // the caller's, after the door and windows
     t.openings = holes;
     return add_tower(scene, t);

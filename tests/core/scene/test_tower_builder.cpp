@@ -104,3 +104,20 @@ TEST_CASE("a house keeps the caller's openings beside its door and windows; hole
     Scene again = test::builder_scene();
     CHECK_THROWS_WITH(add_house(again, h), Catch::Contains("opening 4 meets opening 1 or its lintel in wall 1"));
 }
+
+TEST_CASE("a house whose door or windows do not fit its courses is refused, naming their options", "[scene][builders]") {
+    // 14 courses of 0.07 m (0.98 m): the default windows (sill 0.9 m, 1 m high: courses 13 to 27)
+    // were refused as "opening 1 ... the tower's 14 courses"
+    HouseSpec h = small_house();
+    h.walls.courses = 14;
+    h.door_height = 0.6;
+    h.window_sill = 0.9, h.window_height = 1.0;   // the generator's defaults
+    Scene s = test::builder_scene();
+    CHECK_THROWS_WITH(add_house(s, h), Catch::Contains("the windows (--window-sill 0.9 m, --window-height 1 m: courses "
+                                                       "13 to 27) do not fit the house's 14 courses"));
+    h.window_sill = 0.3, h.window_height = 0.4;
+    h.door_height = 2.0;
+    CHECK_THROWS_WITH(add_house(s, h), Catch::Contains("the door (--door-height 2 m, 29 courses) does not fit"));
+    h.door_height = 0.6;
+    CHECK_NOTHROW(add_house(s, h));
+}
