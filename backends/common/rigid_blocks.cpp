@@ -122,7 +122,8 @@ double matched_spring_omega(const Scene& scene, const std::vector<RigidBlock>& b
         for (size_t f = 0; f < 6; ++f) {
             std::vector<BedSpring> springs;
             for (int k : kFaceCorners[f])
-                springs.push_back({block_point_world(b, b.com_world, b.orientation, b.corners[size_t(k)]), 0.25 * b.face_areas[f]});
+                springs.push_back(
+                    {block_point_world(b, b.com_world, b.orientation, b.corners[size_t(k)]), 0.25 * b.face_areas[f]});
             most = std::max(most, spring_bed_omega2(springs, b.orientation * b.face_normals[f], scene.contact.kn,
                                                     scene.contact.ks, b.com_world, b.mass, inertia));
         }

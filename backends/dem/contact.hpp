@@ -68,7 +68,9 @@ struct SubAnchor {
 struct SubForce {
     NodeWeights hit, target;    ///< where its shear part acts on each block (the clipped area's centroid)
     Vec3 force = Vec3::Zero();  ///< on the hitting block (the target takes −force), N
-    Vec3 normal = Vec3::UnitZ();///< outward unit normal of the target side it pushes on (the target face; beyond a capped cut, that side o), splits it in the output
+    /// outward unit normal of the target side it pushes on (the target face; beyond a capped cut,
+    /// that side o; an edge force, its own direction): splits it in the output
+    Vec3 normal = Vec3::UnitZ();
     NodeWeights hit_n, target_n;///< where its normal part acts (the pressure centre; docs/dem.md "scheme = overlap")
     /// add it to the node forces of the hitting block `hb` and the target `tb`: the normal part at
     /// hit_n/target_n, the rest at hit/target (one order of sums: the same bits wherever it is spread)

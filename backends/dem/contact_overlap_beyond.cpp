@@ -119,7 +119,8 @@ double apply_beyond(const BeyondCell& in, Block& hb, int f, Block& tb, int tf, s
                 if (cut < 0 || cut >= in.count || cut == in.side_count) continue;
                 if (cut < in.side_count && in.caps[cut].corner >= 0) continue;
                 const EdgeForce e = edge_force(poly, i, in.c, in.n, cons[size_t(cut)], r.slope, in.kn, &depth);
-                if (!e.force.isZero(0.0)) put(hit_weights(part, e.point), target_weights(e.point, -1), e.force, e.force.normalized());
+                if (!e.force.isZero(0.0))
+                    put(hit_weights(part, e.point), target_weights(e.point, -1), e.force, e.force.normalized());
             }
         }
         if (!(d1 > 0.0)) continue;

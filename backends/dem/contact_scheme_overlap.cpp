@@ -290,7 +290,8 @@ void ContactSet::evaluate_overlap(std::vector<Block>& blocks, double dt, long be
                                 // the step's relative motion where the last force acted and where this
                                 // one acts (the clipped area's centroid runs across a face that lands,
                                 // lifts or turns): the offset grows with their mean
-                                const Vec3 v_old = lay ? vrel : Vec3(anchor->shear_hit.velocity(hb) - anchor->shear_target.velocity(tb));
+                                const Vec3 v_old =
+                                    lay ? vrel : Vec3(anchor->shear_hit.velocity(hb) - anchor->shear_target.velocity(tb));
                                 const Vec3 vt_old = v_old - v_old.dot(nt) * nt;
                                 const Vec3 vt_rel = 0.5 * (vt_old + vt_new);
                                 const double energy_before = lay ? 0.0 : anchor->energy;
@@ -377,7 +378,8 @@ void ContactSet::evaluate_overlap(std::vector<Block>& blocks, double dt, long be
                                         eh = face_node_weights(hb, c.hit_face, w);
                                     }
                                     const NodeWeights et = tb.deformable ? plane_weights(tq, tb.mesh.faces[tf], ct, nt, e.point) : node_weights(tb, tf, e.point);
-                                    const SubForce edge{eh, et, e.force, e.force.normalized(), eh, et};   // a push off the edge: all normal
+                                    // a push off the edge: all of it normal in the output
+                                    const SubForce edge{eh, et, e.force, e.force.normalized(), eh, et};
                                     if (keep_forces) c.sub_forces.push_back(edge);
                                     else edge.spread(hb, tb);
                                     // a closer constraint capped at the face's reach behind o moves
