@@ -294,8 +294,6 @@ void ContactSet::evaluate_overlap(std::vector<Block>& blocks, double dt, long be
                                     lay ? vrel : Vec3(anchor->shear_hit.velocity(hb) - anchor->shear_target.velocity(tb));
                                 const Vec3 vt_old = v_old - v_old.dot(nt) * nt;
                                 const Vec3 vt_rel = 0.5 * (vt_old + vt_new);
-                                const double energy_before = lay ? 0.0 : anchor->energy;
-                                const Vec3 fs_before = lay ? Vec3::Zero() : anchor->fs;
                                 Vec3 u_t = anchor->u - anchor->u.dot(nt) * nt + vt_rel * dt;
                                 // the spring's stiffness ks·A follows the contact area; the offset
                                 // is scaled so that a change of area neither makes nor takes spring
@@ -303,10 +301,9 @@ void ContactSet::evaluate_overlap(std::vector<Block>& blocks, double dt, long be
                                 // the step by the step's mean √A (s = √A·u grows by √A·v·dt: with
                                 // √A_old alone the step's work missed the spring's energy by
                                 // ½ks·(√A − √A_old)·√A·u·v·dt, first order where areas change fast)
-                                Vec3 u_old = anchor->u - anchor->u.dot(nt) * nt;
                                 if (!lay && anchor->area > 0.0) {
                                     const double scale = std::sqrt(anchor->area / in.area);
-                                    u_old *= scale;
+                                    const Vec3 u_old = (anchor->u - anchor->u.dot(nt) * nt) * scale;
                                     u_t = u_old + (0.5 * (1.0 + scale)) * vt_rel * dt;
                                 }
                                 anchor->area = in.area;
@@ -315,6 +312,8 @@ void ContactSet::evaluate_overlap(std::vector<Block>& blocks, double dt, long be
                                 const double cap = slip_ ? law_.friction * fn : std::numeric_limits<double>::max();
                                 if (f_el.norm() > cap) {
                                     // slip: the spring is capped at μ·Fn, the offset shrinks to match
+                                    const double energy_before = lay ? 0.0 : anchor->energy;
+                                    const Vec3 fs_before = lay ? Vec3::Zero() : anchor->fs;
                                     fs = cap * f_el / f_el.norm();
                                     const Vec3 u_new = -fs / ks_a;
                                     anchor->u = u_new;

@@ -25,7 +25,8 @@ double side_contact_omega2(const Block& b, int side, const ContactLaw& law) {
     springs.reserve(hits.size());
     for (const auto& p : hits) springs.push_back({quad_point(q, p.xi), p.area});
     const Mat3 rot = b.body.q.toRotationMatrix();
-    return spring_bed_omega2(springs, n, law.kn, law.ks, b.body.x, b.body.mass, rot * b.body.inertia_body * rot.transpose());
+    const Mat3 inertia = rot * b.body.inertia_body * rot.transpose();
+    return spring_bed_omega2(springs, n, law.kn, law.ks, b.body.x, b.body.mass, inertia);
 }
 
 double contact_critical_step(const std::vector<Block>& blocks, const ContactLaw& law, double reach) {

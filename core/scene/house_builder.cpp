@@ -1,10 +1,10 @@
 #include "scene/house_builder.hpp"
 
 #include <cmath>
-#include <sstream>
 #include <string>
 
 #include "error.hpp"
+#include "output/number_format.hpp"
 
 namespace cairn {
 
@@ -25,11 +25,7 @@ std::vector<Opening> house_openings(const HouseSpec& house) {
 
 namespace {
 
-std::string metres(double x) {
-    std::ostringstream o;
-    o << x << " m";
-    return o.str();
-}
+std::string metres(double x) { return message_number(x) + " m"; }
 
 /// refuses a door or windows that do not fit the house's courses, naming the options that set them
 /// (the tower's own check would call them openings 0 and 1 and the house a tower)
