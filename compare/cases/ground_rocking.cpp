@@ -100,15 +100,24 @@ struct Trust {
     bool verdicts_agree = true;
 };
 
-/// the first time (s) `c` is nowhere within `tol` of `ref` inside ±window of it; inf: never
+/// the first time (s) `c` is nowhere within the angle tolerance of `ref` inside ±window of it; inf:
+/// never. `ref` is read as the line through its samples, so the answer does not hinge on the output
+/// interval: with rows 1 ms apart and a window of 0.83 ms (a 0.1 m tall block) a sampled window
+/// held one row, and a curve shifted by a fraction of a row left the band on every steep stretch.
 double leaves_band(const metrics::Series& ref, const std::vector<double>& c, const GroundSetup& s, double window) {
     const auto& t = ref.t;
     for (size_t i = 0, lo = 0; i < t.size(); ++i) {
         while (t[lo] < t[i] - window) ++lo;
-        bool near = false;
-        for (size_t j = lo; j < t.size() && t[j] <= t[i] + window && !near; ++j)
-            near = std::abs(c[i] - ref.y[j]) <= angle_tolerance(s, ref.y[j]);
-        if (!near) return t[i];
+        // the range of the line over [t_i − window, t_i + window]: its ends and the rows between
+        double y_min = std::min(metrics::interpolate(ref, t[i] - window), metrics::interpolate(ref, t[i] + window));
+        double y_max = std::max(metrics::interpolate(ref, t[i] - window), metrics::interpolate(ref, t[i] + window));
+        for (size_t j = lo; j < t.size() && t[j] <= t[i] + window; ++j) {
+            y_min = std::min(y_min, ref.y[j]);
+            y_max = std::max(y_max, ref.y[j]);
+        }
+        // the tolerance grows with |y| by less than the distance does, so the nearest y is the best
+        const double y = std::clamp(c[i], y_min, y_max);
+        if (std::abs(c[i] - y) > angle_tolerance(s, y)) return t[i];
     }
     return std::numeric_limits<double>::infinity();
 }

@@ -260,3 +260,19 @@ TEST_CASE("ground_rocking: a drive past friction leaves the rigid engines unjudg
     CHECK_THAT(rigid.metrics[0].basis, Catch::Contains("beats friction") && Catch::Contains("0.24"));
     CHECK_FALSE(kind().curve(s, {true}, t).empty());
 }
+
+TEST_CASE("ground_rocking: a block a tenth the size, sampled at the default 1 ms, is judged as the shipped one", "[cases][ground_rocking]") {
+    // block_pulse_rock scaled by 0.1 (times by √0.1): the reference's time window, 1 % of 1/p =
+    // 0.83 ms, is shorter than a row; a run on the reference is judged on its first peak as well
+    const Scene s = load_scene(std::string(CAIRN_SOURCE_DIR) + "/tests/compare/cases/block_pulse_rock_small.toml");
+    const auto t = grid(s.run.duration, 1e-3);
+    const auto ref = kind().curve(s, {false}, t);
+    const auto a = kind().analyse(s, turned_run(s, t, ref, -Vec3::UnitY()), {false});
+    int judged = 0;
+    for (const auto& m : a.metrics) {
+        INFO(m.name << ": " << m.value << " against " << m.reference << " (" << m.basis << ")");
+        CHECK(m.pass());
+        judged += m.judged();
+    }
+    CHECK(judged == 3);   // the uplift, the first peak, the verdict, as for the shipped block
+}
