@@ -33,6 +33,14 @@ std::string housner_unmodelled(const Scene& scene, const GroundSetup& s) {
     return why;
 }
 
+/// why the Winkler block does not model a penalty run, or empty
+std::string penalty_unmodelled(const Scene& scene, ContactKind contact, const GroundSetup& s) {
+    if (s.columns > 1)
+        return "a frame of " + std::to_string(s.columns) + " columns under '" + s.beam +
+               "' on compliant joints: the Winkler oracle models one block (the rigid frame's curve is a guide only)";
+    return winkler_unmodelled(scene, contact, s.axis_block);
+}
+
 /// what a rotation history did, read the same way from a run and from an oracle's curve
 struct Response {
     double mark_time = NAN;    ///< s: |θ| first reaches the uplift mark
@@ -74,7 +82,7 @@ std::vector<double> ground_curve(const Scene& scene, ContactKind contact, const 
     if (t.empty()) return {};
     const GroundSetup s = read_ground_setup(scene);
     if (contact.penalty) {
-        if (!winkler_unmodelled(scene, contact, s.axis_block).empty()) return {};
+        if (!penalty_unmodelled(scene, contact, s).empty()) return {};
         return ground_winkler(scene, contact, s, t);
     }
     return ground_housner(scene, s, t, -1.0).theta;
@@ -86,7 +94,7 @@ double angle_tolerance(const GroundSetup& s, double reference) { return 0.02 * s
 
 /// the time tolerance: 1 % of the block's time scale 1/p (measured within 0.73 ms on a 0.2 × 1.0 m
 /// block, 1/p = 0.26 s)
-double time_tolerance(const Scene& scene, const GroundSetup& s) { return 0.01 / housner_block(scene, s.axis_block).p(); }
+double time_tolerance(const Scene& scene, const GroundSetup& s) { return 0.01 / ground_p(scene, s); }
 
 /// How far the reference can be trusted: rocking is chaotic near a threshold, and the engines
 /// differ from the oracles by about a 0.1 % change of the drive (measured: dem left its Winkler base
@@ -133,7 +141,7 @@ Trust trust_of(const Scene& scene, ContactKind contact, const GroundSetup& s, co
         out.verdicts_agree = out.verdicts_agree && read_response({ref.t, c}, mark, s.alpha).overturned == overturned;
     }
     if (!contact.penalty) {
-        const double rh = housner_block(scene, s.axis_block).velocity_ratio();
+        const double rh = ground_ratio(scene, s);
         for (double r : {0.5 * (1.0 + rh), 1.0})
             if (read_response({ref.t, ground_housner(scene, s, ref.t, r).theta}, mark, s.alpha).overturned != overturned)
                 out.verdicts_agree = false;
@@ -166,6 +174,16 @@ metrics::Metric if_trusted(metrics::Metric judged, double decided, const Trust& 
     return shown;
 }
 
+/// the frame's reference, named with its numbers
+std::string frame_label(const Scene& scene, const GroundSetup& s) {
+    char buf[320];
+    std::snprintf(buf, sizeof buf,
+                  "the rigid frame of Makris & Vassiliou (2013): %d columns under '%s', γ = m_beam/(N m_column) = %.4g, "
+                  "p̂ = p·√((1 + 2γ)/(1 + 3γ)) = %.5g 1/s, impact ratio (1 − 1.5 sin²α + 3γ cos 2α)/(1 + 3γ) = %.5g",
+                  s.columns, s.beam.c_str(), s.gamma, ground_p(scene, s), ground_ratio(scene, s));
+    return buf;
+}
+
 CaseAnalysis analyse_ground(const Scene& scene, const std::vector<Sample>& samples, ContactKind contact) {
     using namespace metrics;
     const GroundSetup s = read_ground_setup(scene);
@@ -177,11 +195,11 @@ CaseAnalysis analyse_ground(const Scene& scene, const std::vector<Sample>& sampl
     const Response run = read_response(out.measured, mark, s.alpha);
     if (std::isfinite(run.mark_time)) out.event_time = run.mark_time, out.has_event = true;
 
-    const std::string unmodelled = contact.penalty ? winkler_unmodelled(scene, contact, s.axis_block) : housner_unmodelled(scene, s);
+    const std::string unmodelled = contact.penalty ? penalty_unmodelled(scene, contact, s) : housner_unmodelled(scene, s);
     if (!unmodelled.empty()) {
         out.analytic = ground_housner(scene, s, t, -1.0).theta;
         out.analytic_key = "Housner";
-        out.analytic_label = "Housner's rigid block under the same drive (guide only)";
+        out.analytic_label = (s.columns > 1 ? frame_label(scene, s) : "Housner's rigid block under the same drive") + " (guide only)";
         const Response ref = read_response({t, out.analytic}, mark, s.alpha);
         out.metrics.push_back(not_comparable("largest rotation", "rad", run.largest, ref.largest, unmodelled));
         return out;
@@ -195,21 +213,21 @@ CaseAnalysis analyse_ground(const Scene& scene, const std::vector<Sample>& sampl
     } else {
         out.analytic = ground_housner(scene, s, t, -1.0).theta;
         out.analytic_key = "Housner";
-        out.analytic_label = "Housner's rigid block under the scene's drive, impact ratio 1 − 1.5 sin²α";
+        out.analytic_label = s.columns > 1 ? frame_label(scene, s) : "Housner's rigid block under the scene's drive, impact ratio 1 − 1.5 sin²α";
     }
     const Series ref_curve{t, out.analytic};
     const Response ref = read_response(ref_curve, mark, s.alpha);
     const Trust trust = trust_of(scene, contact, s, ref_curve, ref.overturned);
-    const std::string model = winkler ? "the Winkler base (dem's contact law, integrated independently)"
-                                      : "Housner's rigid block (rigid-contact engines: their step and contact slop)";
+    const std::string model = winkler            ? "the Winkler base (dem's contact law, integrated independently)"
+                              : s.columns > 1 ? "the rigid frame of Makris & Vassiliou (rigid-contact engines: their step and contact slop)"
+                                              : "Housner's rigid block (rigid-contact engines: their step and contact slop)";
     const double t_tol = time_tolerance(scene, s);
     char basis[300];
     std::snprintf(basis, sizeof basis, "%s; 2 %% plus 0.5 %% of α = %.3g rad", model.c_str(), 0.005 * s.alpha);
     auto angle = [&](const char* name, double value, double reference) {
         return absolute(name, "rad", value, reference, angle_tolerance(s, reference), basis);
     };
-    const auto hb = housner_block(scene, s.axis_block);
-    const oracle::RockingOracle free_block(hb.b, hb.h, hb.g);
+    const oracle::RockingOracle free_block = ground_oracle(scene, s);
     const double hill = free_block.energy(s.alpha, 0.0);
     // the verdict is settled when it overturns, or once the drive is over and the energy is below
     // the hill (a 5 % margin: a Winkler base stores a little more than the rigid block's energy);
@@ -242,7 +260,7 @@ CaseAnalysis analyse_ground(const Scene& scene, const std::vector<Sample>& sampl
     }
     const double said = ref.overturned ? 1.0 : 0.0, did = run.overturned ? 1.0 : 0.0;
     const char* rule = "overturned: |θ| reached π/3, or ended beyond α";
-    const std::string verdict_basis = (winkler ? "as the Winkler base; " : "as Housner's block; ") + std::string(rule);
+    const std::string verdict_basis = (winkler ? "as the Winkler base; " : s.columns > 1 ? "as the rigid frame; " : "as Housner's block; ") + std::string(rule);
     if (!winkler && scene.contact.restitution > 0.0)
         out.metrics.push_back(info("overturns (1 yes, 0 no)", "", did, said,
                                    "the scene's restitution bounces the rigid engines' impacts; Housner's do not"));

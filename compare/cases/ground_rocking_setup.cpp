@@ -97,6 +97,48 @@ void read_direction(const Scene& scene, const BlockDef& d, GroundSetup& out) {
     }
 }
 
+/// the block's lowest and highest corner heights in the world, m
+std::pair<double, double> heights(const BlockDef& d) {
+    double lo = 1e300, hi = -1e300;
+    for (const auto& c : d.corners) {
+        const double z = (d.position + d.orientation * c).z();
+        lo = std::min(lo, z), hi = std::max(hi, z);
+    }
+    return {lo, hi};
+}
+
+/// the block's extent (m) along a horizontal world direction
+double extent_along(const BlockDef& d, const Vec3& dir) {
+    double lo = 1e300, hi = -1e300;
+    for (const auto& c : d.corners) {
+        const double x = (d.orientation * c).dot(dir);
+        lo = std::min(lo, x), hi = std::max(hi, x);
+    }
+    return hi - lo;
+}
+
+/// the loads on block b per unit mass at t, m/s²
+Vec3 block_drive(const Scene& scene, int b, double m, double t) {
+    Vec3 f = Vec3::Zero();
+    for (const auto& l : scene.loads)
+        if (l.block == b) f += l.factor(t) * l.force;
+    return f / m;
+}
+
+/// the block stands upright, at rest, as a box in its frame
+void require_upright_box(const Scene& scene, const BlockDef& d, const char* role) {
+    if ((d.orientation * Vec3::UnitZ()).z() < std::cos(1e-3))
+        throw refuse(scene, "blocks." + d.name + ".orientation: the " + role + " must stand upright");
+    if (d.velocity.norm() > 0.0 || d.angular_velocity.norm() > 0.0)
+        throw refuse(scene, "blocks." + d.name + ": the " + role + " must start at rest");
+    Vec3 lo = Vec3::Constant(1e300), hi = Vec3::Constant(-1e300);
+    for (const auto& c : d.corners) lo = lo.cwiseMin(c), hi = hi.cwiseMax(c);
+    for (const auto& c : d.corners)
+        for (int k = 0; k < 3; ++k)
+            if (std::min(std::abs(c[k] - lo[k]), std::abs(c[k] - hi[k])) > 1e-9 * (hi - lo).maxCoeff())
+                throw refuse(scene, "blocks." + d.name + ": the " + role + " must be rectangular (its corners on a box in its frame)");
+}
+
 /// the block stands wholly on the top of one fixed block: its four lowest corners inside that top
 /// (in the support's frame) and at its height within 1 % of the block's height (a placing gap);
 /// on a narrower support it would rock about the support's edges, not its own
@@ -126,6 +168,96 @@ void require_support(const Scene& scene, const BlockDef& d) {
                             "not its own");
 }
 
+/// the other free blocks as a frame around the block: equal columns standing beside it and one
+/// beam resting on all their tops, all driven alike at their centres; fills the frame's fields
+void read_frame(const Scene& scene, const BlockDef& d, GroundSetup& out) {
+    const int a = scene.reference->block;
+    const auto [bottom, top] = heights(d);
+    const double height = top - bottom, m_column = block_mass(scene, a);
+    const Vec3 across = out.dir;
+    std::vector<int> columns{a};
+    int beam = -1;
+    for (size_t i = 0; i < scene.blocks.size(); ++i) {
+        const BlockDef& b = scene.blocks[i];
+        if (b.fixed || int(i) == a) continue;
+        const double z = heights(b).first;
+        // 1 % of the column's height: a placing gap, as for the support
+        if (std::abs(z - bottom) <= 0.01 * height) {
+            columns.push_back(int(i));
+        } else if (std::abs(z - top) <= 0.01 * height) {
+            if (beam >= 0)
+                throw refuse(scene, "blocks." + b.name + ": a frame has one beam across its columns, and '" +
+                                        scene.blocks[size_t(beam)].name + "' is one already");
+            beam = int(i);
+        } else {
+            throw refuse(scene, "blocks." + b.name + ": neither a column standing beside '" + d.name +
+                                    "' nor a beam on its top: the oracles model one block, or a frame of equal columns under one beam");
+        }
+    }
+    if (beam < 0 || columns.size() < 2)
+        throw refuse(scene, "blocks." + scene.blocks[size_t(beam >= 0 ? beam : columns.back())].name +
+                                ": the oracles model one block, or a frame of two or more equal columns under one beam (a "
+                                "block on a single column turns with it or rocks on it)");
+    const BlockDef& cap = scene.blocks[size_t(beam)];
+    require_upright_box(scene, cap, "beam");
+    for (int c : columns) {
+        const BlockDef& col = scene.blocks[size_t(c)];
+        if (c != a) {
+            require_upright_box(scene, col, "column");
+            require_support(scene, col);
+            // 1e-9: equal as written
+            const bool same = std::abs(heights(col).second - top) <= 1e-9 * height &&
+                              std::abs(extent_along(col, across) - extent_along(d, across)) <= 1e-9 * height &&
+                              std::abs(extent_along(col, out.axis) - extent_along(d, out.axis)) <= 1e-9 * height &&
+                              std::abs(block_mass(scene, c) - m_column) <= 1e-9 * m_column;
+            if (!same)
+                throw refuse(scene, "blocks." + col.name + ": a frame's columns must equal '" + d.name +
+                                        "' (size across and along the drive, height, mass): they rock together");
+        }
+        // the beam covers the column's top: its four top corners inside the beam's bottom face
+        Vec3 lo = Vec3::Constant(1e300), hi = Vec3::Constant(-1e300);
+        for (const auto& k : cap.corners) lo = lo.cwiseMin(k), hi = hi.cwiseMax(k);
+        const double eps = 1e-9 * (hi - lo).maxCoeff();
+        for (const auto& k : col.corners) {
+            const Vec3 w = col.position + col.orientation * k;
+            if (w.z() < top - 0.01 * height) continue;
+            const Vec3 l = cap.orientation.conjugate() * (w - cap.position);
+            if (l.x() < lo.x() - eps || l.x() > hi.x() + eps || l.y() < lo.y() - eps || l.y() > hi.y() + eps)
+                throw refuse(scene, "blocks." + cap.name + ": the beam must cover the top of every column, and a top corner of '" +
+                                        col.name + "' lies beyond it");
+        }
+    }
+    // every block of the frame driven as the column, at its centre: a [ground_motion] does that
+    std::vector<double> at = out.breaks;
+    for (size_t i = 0; i + 1 < out.breaks.size(); ++i) at.push_back(0.5 * (out.breaks[i] + out.breaks[i + 1]));
+    double largest = 0.0;
+    for (double t : at) largest = std::max(largest, out.drive(t).norm());
+    std::vector<int> members = columns;
+    members.push_back(beam);
+    for (int b : members) {
+        const BlockDef& blk = scene.blocks[size_t(b)];
+        const Vec3 centre = mass_properties(blk.corners, 1.0).centre;
+        const double m = block_mass(scene, b);
+        for (const auto& l : scene.loads)
+            if (l.block == b && !l.body && (l.point - centre).norm() > 1e-9 * height)
+                throw refuse(scene, "a load on block '" + blk.name + "' acts off its centre of mass: the frame's oracle drives "
+                                    "every block at its centre (a [ground_motion])");
+        for (double t : at)
+            if ((block_drive(scene, b, m, t) - out.drive(t)).norm() > 1e-9 * largest)
+                throw refuse(scene, "block '" + blk.name + "' is driven unlike '" + d.name +
+                                        "' per unit mass: the frame's oracle shakes every block alike (a [ground_motion])");
+    }
+    out.columns = int(columns.size());
+    out.beam = cap.name;
+    out.gamma = block_mass(scene, beam) / (double(out.columns) * m_column);
+    // Makris & Vassiliou (2013), checked by hand in docs/validation.md: the beam translates by
+    // 2R[sin α − sin(α − θ)] and rises by 2R[cos(α − θ) − cos α], so its mass adds 4R²m_b to
+    // the frame's inertia and 2R m_b g to its overturning weight
+    const double g = out.gamma, al = out.alpha;
+    out.p2_factor = (1.0 + 2.0 * g) / (1.0 + 3.0 * g);
+    out.ratio = (1.0 - 1.5 * std::sin(al) * std::sin(al) + 3.0 * g * std::cos(2.0 * al)) / (1.0 + 3.0 * g);
+}
+
 }  // namespace
 
 /// the scene as the oracles see it; throws cairn::Error naming what they cannot model
@@ -133,26 +265,32 @@ GroundSetup read_ground_setup(const Scene& scene) {
     require_horizontal_base(scene, kKind);
     const int a = scene.reference->block;
     const BlockDef& d = scene.blocks.at(size_t(a));
-    for (const auto& b : scene.blocks)
-        if (!b.fixed && b.name != d.name)
-            throw refuse(scene, "blocks." + b.name + ": the oracles model block '" + d.name + "' alone, and the scene has another free block");
-    if ((d.orientation * Vec3::UnitZ()).z() < std::cos(1e-3))
-        throw refuse(scene, "blocks." + d.name + ".orientation: the block must stand upright");
-    if (d.velocity.norm() > 0.0 || d.angular_velocity.norm() > 0.0)
-        throw refuse(scene, "blocks." + d.name + ": the block must start at rest");
+    require_upright_box(scene, d, "block");
+    require_support(scene, d);
     Vec3 lo = Vec3::Constant(1e300), hi = Vec3::Constant(-1e300);
     for (const auto& c : d.corners) lo = lo.cwiseMin(c), hi = hi.cwiseMax(c);
-    for (const auto& c : d.corners)
-        for (int k = 0; k < 3; ++k)
-            if (std::min(std::abs(c[k] - lo[k]), std::abs(c[k] - hi[k])) > 1e-9 * (hi - lo).maxCoeff())
-                throw refuse(scene, "blocks." + d.name + ": the block must be rectangular (its corners on a box in its frame)");
-    require_support(scene, d);
     GroundSetup out;
     out.free = free_index(scene, a);
     read_drive(scene, d, (hi - lo).maxCoeff(), out);
     read_direction(scene, d, out);
     out.alpha = housner_block(scene, out.axis_block).alpha();
+    for (const auto& b : scene.blocks)
+        if (!b.fixed && b.name != d.name) {
+            read_frame(scene, d, out);
+            break;
+        }
     return out;
+}
+
+oracle::RockingOracle ground_oracle(const Scene& scene, const GroundSetup& s) {
+    const auto hb = housner_block(scene, s.axis_block);
+    return oracle::RockingOracle(hb.b, hb.h, s.p2_factor * hb.g);
+}
+
+double ground_p(const Scene& scene, const GroundSetup& s) { return ground_oracle(scene, s).p(); }
+
+double ground_ratio(const Scene& scene, const GroundSetup& s) {
+    return s.ratio >= 0.0 ? s.ratio : housner_block(scene, s.axis_block).velocity_ratio();
 }
 
 /// the drive as Housner's oracle takes it: the ground's acceleration along dir and upwards
@@ -170,12 +308,18 @@ oracle::BaseMotion ground_base_motion(const GroundSetup& s) {
 
 /// Housner's block under the scene's drive at the times t, with impact ratio r (< 0: Housner's)
 oracle::RockingResult ground_housner(const Scene& scene, const GroundSetup& s, const std::vector<double>& t, double r) {
-    const auto hb = housner_block(scene, s.axis_block);
     oracle::RockingOptions o;
-    o.restitution = r;
+    o.restitution = r < 0.0 ? s.ratio : r;
     o.duration = t.empty() ? scene.run.duration : t.back();
     o.output_times = t;
-    return oracle::RockingOracle(hb.b, hb.h, gravity(scene)).run(ground_base_motion(s), o);
+    oracle::BaseMotion m = ground_base_motion(s);
+    if (s.p2_factor != 1.0) {
+        // gravity and drive both times p2_factor (ground_oracle): θ̈ = −p̂²[(1 + a_v/g) sin + (a_g/g) cos]
+        const double k = s.p2_factor;
+        m.horizontal = [h = m.horizontal, k](double x) { return k * h(x); };
+        m.vertical = [v = m.vertical, k](double x) { return k * v(x); };
+    }
+    return ground_oracle(scene, s).run(m, o);
 }
 
 /// the Winkler block of dem's contact under the same drive, θ at the times t

@@ -4,6 +4,7 @@
 /// scene's own drive (compare/cases/ground_rocking.cpp judges with them).
 
 #include <functional>
+#include <string>
 #include <vector>
 
 #include "analytic/rocking_oracle.hpp"
@@ -23,6 +24,13 @@ struct GroundSetup {
     double alpha = 0.0;                  ///< slenderness atan(b/h) across the axis, rad
     double scale = 1.0;                  ///< the oracles' horizontal drive is the scene's times this
     double friction_demand = 0.0;        ///< largest |horizontal drive| / (g − its vertical part)
+    /// a frame: N ≥ 2 equal columns (the block among them) under one beam that translates as they
+    /// rock together (Makris & Vassiliou 2013); N = 1: the block alone
+    int columns = 1;
+    std::string beam;                    ///< the beam's name (frame)
+    double gamma = 0.0;                  ///< m_beam / (N m_column) (frame)
+    double p2_factor = 1.0;              ///< p̂²/p² = (1 + 2γ)/(1 + 3γ): the frame rocks as its column, slower
+    double ratio = -1.0;                 ///< the frame's impact ratio (1 − 1.5 sin²α + 3γ cos 2α)/(1 + 3γ); < 0: Housner's
 };
 
 /// the scene as the oracles see it; throws cairn::Error naming the key of what they cannot model
@@ -31,7 +39,17 @@ GroundSetup read_ground_setup(const Scene& scene);
 /// the drive as Housner's oracle takes it: the ground's acceleration along dir and upwards
 oracle::BaseMotion ground_base_motion(const GroundSetup& s);
 
-/// Housner's block under the scene's drive at the times t, with impact ratio r (< 0: Housner's)
+/// Housner's equation of the block, or of the frame (its column with p² times p2_factor: the
+/// block under gravity and drive both times p2_factor is that equation exactly)
+oracle::RockingOracle ground_oracle(const Scene& scene, const GroundSetup& s);
+
+/// p of the block, or p̂ of the frame, 1/s
+double ground_p(const Scene& scene, const GroundSetup& s);
+
+/// the impact ratio of the block (Housner's 1 − 1.5 sin²α) or of the frame
+double ground_ratio(const Scene& scene, const GroundSetup& s);
+
+/// Housner's block (or frame) under the scene's drive at the times t, with impact ratio r (< 0: its own)
 oracle::RockingResult ground_housner(const Scene& scene, const GroundSetup& s, const std::vector<double>& t, double r);
 
 /// the Winkler block of dem's contact under the same drive, θ at the times t

@@ -6,6 +6,7 @@
 #include <functional>
 
 #include "cases/case_kind.hpp"
+#include "cases/ground_rocking_setup.hpp"
 #include "scene/scene_io.hpp"
 #include "support/backend_facts.hpp"
 #include "validation/plan.hpp"
@@ -275,4 +276,104 @@ TEST_CASE("ground_rocking: a block a tenth the size, sampled at the default 1 ms
         judged += m.judged();
     }
     CHECK(judged == 3);   // the uplift, the first peak, the verdict, as for the shipped block
+}
+
+namespace {
+
+Scene frame(const std::vector<std::string>& overrides = {}) {
+    std::vector<Override> set;
+    for (const auto& o : overrides) set.push_back(parse_override(o));
+    return load_scene(std::string(CAIRN_SOURCE_DIR) + "/scenarios/earthquake/frame_pulse_rock.toml", set);
+}
+
+}  // namespace
+
+TEST_CASE("ground_rocking: a trilithon reads as Makris and Vassiliou's frame", "[cases][ground_rocking]") {
+    // two 0.4 × 0.4 × 1.6 m posts (640 kg) under a 2.0 × 0.4 × 0.4 m lintel (800 kg): by hand,
+    // γ = 800/1280, p̂²/p² = (1 + 2γ)/(1 + 3γ) = 2.25/2.875, and with sin²α = 1/17 (tan α = 1/4)
+    // the impact ratio (1 − 1.5/17 + 1.875·15/17)/2.875 = 0.8925831
+    const cases::GroundSetup s = cases::read_ground_setup(frame());
+    CHECK(s.columns == 2);
+    CHECK(s.beam == "L");
+    CHECK(s.gamma == Approx(0.625).epsilon(1e-12));
+    CHECK(s.p2_factor == Approx(2.25 / 2.875).epsilon(1e-12));
+    CHECK(cases::ground_ratio(frame(), s) == Approx(0.8925831202).epsilon(1e-9));
+    const double p = std::sqrt(3.0 * 9.81 / (4.0 * std::hypot(0.2, 0.8)));
+    CHECK(cases::ground_p(frame(), s) == Approx(p * std::sqrt(2.25 / 2.875)).epsilon(1e-12));
+}
+
+TEST_CASE("ground_rocking: a frame under a constant push lifts off as its linearised equation says", "[cases][ground_rocking]") {
+    // 0.4 g from t = 0 (tan α = 0.25): about θ = 0 the frame's equation is θ̈ = θ̈0 + λ²θ with
+    // θ̈0 = p̂²(a cos α − sin α), λ² = p̂²(a sin α + cos α), so θ = (θ̈0/λ²)(cosh λt − 1) to second
+    // order in θ. At λt = 0.5 (θ = 0.0174 rad) the neglected terms are 1.0e-5 of it (an RK4 of the
+    // full equation, by hand), so 1e-4; with the lone post's p instead of p̂ it would be 29 % larger
+    const Scene s = frame({"ground_motion.time=[0.0, 10.0]", "ground_motion.acceleration=[0.4, 0.4]", "run.duration=1"});
+    const cases::GroundSetup g = cases::read_ground_setup(s);
+    const double al = std::atan(0.25), a = 0.4, p2 = cases::ground_p(s, g) * cases::ground_p(s, g);
+    const double acc0 = p2 * (a * std::cos(al) - std::sin(al)), lambda = std::sqrt(p2 * (a * std::sin(al) + std::cos(al)));
+    const double t = 0.5 / lambda;
+    const auto theta = cases::ground_housner(s, g, {0.0, t}, -1.0).theta;
+    CHECK(std::abs(theta[1]) == Approx(acc0 / (lambda * lambda) * (std::cosh(0.5) - 1.0)).epsilon(1e-4));
+}
+
+TEST_CASE("ground_rocking: what is not a frame of equal columns under one beam is refused", "[cases][ground_rocking]") {
+    auto says = [](const Scene& x, const std::string& what) {
+        CHECK_THROWS_WITH(cases::read_ground_setup(x), Catch::Contains(what) && Catch::Contains("ground_rocking"));
+    };
+    // a cap on one post: it turns with it or rocks on it
+    says(parse_scene(R"(
+[run]
+duration = 1.0
+[contact]
+kn = 1e10
+ks = 1e10
+friction = 0.7
+[materials.stone]
+density = 2500
+young = 30e9
+poisson = 0.2
+[blocks.P1]
+size = [0.4, 0.4, 1.6]
+position = [0.0, 0.0, 0.8]
+material = "stone"
+[blocks.cap]
+size = [0.6, 0.6, 0.3]
+position = [0.0, 0.0, 1.75]
+material = "stone"
+[blocks.base]
+size = [3.0, 3.0, 0.5]
+position = [0.0, 0.0, -0.25]
+material = "stone"
+fixed = true
+[ground_motion]
+time = [0.0, 10.0]
+acceleration = [0.4, 0.4]
+units = "g"
+[reference]
+kind = "ground_rocking"
+block = "P1"
+)",
+                     std::string(CAIRN_SOURCE_DIR) + "/scenarios/earthquake/capped_post.toml"),
+         "blocks.cap: the oracles model one block, or a frame of two or more equal columns");
+    // posts of unequal width
+    says(frame({"blocks.P2.size=[0.5, 0.4, 1.6]"}), "must equal 'P1'");
+    // a lintel too short to cover the second post
+    says(frame({"blocks.L.size=[1.4, 0.4, 0.4]", "blocks.L.position=[-0.3, 0.0, 1.8]"}), "a top corner of 'P2'");
+    // a third free block lying on the base
+    {
+        Scene x = frame();
+        BlockDef b = x.blocks[0];
+        b.name = "loose";
+        b.position = Vec3(1.5, 0.0, 0.3);
+        x.blocks.push_back(b);
+        says(x, "blocks.loose: neither a column");
+    }
+    // a push on the lintel alone: the frame is no longer shaken alike
+    {
+        Scene x = frame();
+        LoadDef l;
+        l.block = x.block_index("L"), l.force = Vec3(100.0, 0.0, 0.0), l.point = Vec3::Zero();
+        x.loads.push_back(l);
+        says(x, "block 'L' is driven unlike 'P1'");
+    }
 }
