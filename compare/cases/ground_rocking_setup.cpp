@@ -117,11 +117,10 @@ double extent_along(const BlockDef& d, const Vec3& dir) {
     return hi - lo;
 }
 
-/// the loads on block b per unit mass at t, m/s²
-Vec3 block_drive(const Scene& scene, int b, double m, double t) {
+/// the loads per unit mass at t, m/s²
+Vec3 drive_of(const std::vector<const LoadDef*>& loads, double m, double t) {
     Vec3 f = Vec3::Zero();
-    for (const auto& l : scene.loads)
-        if (l.block == b) f += l.factor(t) * l.force;
+    for (const LoadDef* l : loads) f += l->factor(t) * l->force;
     return f / m;
 }
 
@@ -234,16 +233,18 @@ void read_frame(const Scene& scene, const BlockDef& d, GroundSetup& out) {
     for (double t : at) largest = std::max(largest, out.drive(t).norm());
     std::vector<int> members = columns;
     members.push_back(beam);
+    std::vector<std::vector<const LoadDef*>> loads(scene.blocks.size());
+    for (const auto& l : scene.loads) loads[size_t(l.block)].push_back(&l);
     for (int b : members) {
         const BlockDef& blk = scene.blocks[size_t(b)];
         const Vec3 centre = mass_properties(blk.corners, 1.0).centre;
         const double m = block_mass(scene, b);
-        for (const auto& l : scene.loads)
-            if (l.block == b && !l.body && (l.point - centre).norm() > 1e-9 * height)
+        for (const LoadDef* l : loads[size_t(b)])
+            if (!l->body && (l->point - centre).norm() > 1e-9 * height)
                 throw refuse(scene, "a load on block '" + blk.name + "' acts off its centre of mass: the frame's oracle drives "
                                     "every block at its centre (a [ground_motion])");
         for (double t : at)
-            if ((block_drive(scene, b, m, t) - out.drive(t)).norm() > 1e-9 * largest)
+            if ((drive_of(loads[size_t(b)], m, t) - drive_of(loads[size_t(a)], m_column, t)).norm() > 1e-9 * largest)
                 throw refuse(scene, "block '" + blk.name + "' is driven unlike '" + d.name +
                                         "' per unit mass: the frame's oracle shakes every block alike (a [ground_motion])");
     }
