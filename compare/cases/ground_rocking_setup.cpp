@@ -197,6 +197,18 @@ void read_frame(const Scene& scene, const BlockDef& d, GroundSetup& out) {
         throw refuse(scene, "blocks." + scene.blocks[size_t(beam >= 0 ? beam : columns.back())].name +
                                 ": the oracles model one block, or a frame of two or more equal columns under one beam (a "
                                 "block on a single column turns with it or rocks on it)");
+    // the columns' pivot edges must not all lie on one line: spread along the drive, they make the
+    // beam translate as a parallelogram; in one line across it, columns and beam could rock as one
+    // body about that line, which is another block
+    double lo = 1e300, hi = -1e300;
+    for (int c : columns) {
+        const double x = scene.blocks[size_t(c)].position.dot(across);
+        lo = std::min(lo, x), hi = std::max(hi, x);
+    }
+    if (hi - lo < extent_along(d, across))
+        throw refuse(scene, "blocks." + d.name + ": the frame's columns stand in a line across the drive, so they and the "
+                                "beam can rock as one body about their common edge; the frame's oracle needs them spread "
+                                "along the drive (its plane)");
     const BlockDef& cap = scene.blocks[size_t(beam)];
     require_upright_box(scene, cap, "beam");
     for (int c : columns) {
