@@ -1,4 +1,4 @@
-// `cairn make arch|wall|column|tower|house`: a scene file from a generator (docs/cli.md)
+// `cairn make arch|wall|column|colonnade|tower|house`: a scene file from a generator (docs/cli.md)
 #include <algorithm>
 #include <cmath>
 #include <iostream>
@@ -13,7 +13,9 @@
 #include "error.hpp"
 #include "geometry/overlap.hpp"
 #include "output/atomic_write.hpp"
+#include "output/number_format.hpp"
 #include "scene/arch_builder.hpp"
+#include "scene/colonnade_builder.hpp"
 #include "scene/column_builder.hpp"
 #include "scene/house_builder.hpp"
 #include "scene/scene_io.hpp"
@@ -67,6 +69,12 @@ const std::map<std::string, std::vector<Param>>& generator_params() {
          {{"drums", "3", Unit::count, "number of drums"},
           {"width", "0.3m", Unit::length, "side of the square section"},
           {"drum-height", "0.5m", Unit::length, "height of each drum"}}},
+        {"colonnade",
+         {{"columns", "2", Unit::count, "number of columns (at least 2; 2: a trilithon)"},
+          {"width", "0.4m", Unit::length, "side of a column's square section"},
+          {"height", "1.6m", Unit::length, "column height"},
+          {"spacing", "1.2m", Unit::length, "columns centre to centre, along x (at least the width)"},
+          {"beam-height", "0.4m", Unit::length, "height of the beam over the columns"}}},
         {"tower",
          {{"length", "10", Unit::count, "outer length along x, in brick lengths"},
           {"width", "10", Unit::count, "outer width along y, in brick lengths"},
@@ -351,6 +359,14 @@ Generated generate(const std::string& kind, const std::map<std::string, double>&
         s.description = "Dry brick wall of " + std::to_string(w.courses) + " courses in " + (text.at("bond") == "english" ? "English" : "running") + " bond" +
                         (w.openings.empty() ? "" : " with " + std::to_string(w.openings.size()) + " opening(s)") +
                         " (cairn make wall)";
+    } else if (kind == "colonnade") {
+        ColonnadeSpec c{count("columns"), v.at("width"), v.at("height"), v.at("spacing"), v.at("beam-height")};
+        if (c.columns < 2) throw Error("--columns 1: a colonnade needs at least 2 columns (a block on one column: cairn make column)");
+        if (c.spacing < c.width)
+            throw Error("--spacing " + number_format("%g", c.spacing) + " m is less than --width " +
+                        number_format("%g", c.width) + " m: the columns would overlap");
+        add_colonnade(s, c);
+        s.description = "Colonnade of " + std::to_string(c.columns) + " columns under a beam on a fixed base (cairn make colonnade)";
     } else if (kind == "column") {
         ColumnSpec c{count("drums"), v.at("width"), v.at("drum-height"), true};
         add_column(s, c);
@@ -382,7 +398,7 @@ Generated generate(const std::string& kind, const std::map<std::string, double>&
 }  // namespace
 
 std::vector<CLI::App*> add_make_commands(CLI::App& app, MakeOptions& options) {
-    auto* make = app.add_subcommand("make", "write a scene file from a generator: arch, wall, column, tower, house");
+    auto* make = app.add_subcommand("make", "write a scene file from a generator: arch, wall, column, colonnade, tower, house");
     make->require_subcommand(1);
     std::vector<CLI::App*> subs;
     for (const auto& [kind, params] : generator_params()) {
