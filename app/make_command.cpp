@@ -361,12 +361,14 @@ Generated generate(const std::string& kind, const std::map<std::string, double>&
                         " (cairn make wall)";
     } else if (kind == "colonnade") {
         ColonnadeSpec c{count("columns"), v.at("width"), v.at("height"), v.at("spacing"), v.at("beam-height")};
-        if (c.columns < 2) throw Error("--columns 1: a colonnade needs at least 2 columns (a block on one column: cairn make column)");
+        if (c.columns < 2)
+            throw Error("--columns 1: a colonnade needs at least 2 columns (a block on one column: cairn make column)");
         if (c.spacing < c.width)
             throw Error("--spacing " + number_format("%g", c.spacing) + " m is less than --width " +
                         number_format("%g", c.width) + " m: the columns would overlap");
         add_colonnade(s, c);
-        s.description = "Colonnade of " + std::to_string(c.columns) + " columns under a beam on a fixed base (cairn make colonnade)";
+        s.description =
+            "Colonnade of " + std::to_string(c.columns) + " columns under a beam on a fixed base (cairn make colonnade)";
     } else if (kind == "column") {
         ColumnSpec c{count("drums"), v.at("width"), v.at("drum-height"), true};
         add_column(s, c);

@@ -213,14 +213,16 @@ CaseAnalysis analyse_ground(const Scene& scene, const std::vector<Sample>& sampl
     } else {
         out.analytic = ground_housner(scene, s, t, -1.0).theta;
         out.analytic_key = "Housner";
-        out.analytic_label = s.columns > 1 ? frame_label(scene, s) : "Housner's rigid block under the scene's drive, impact ratio 1 − 1.5 sin²α";
+        out.analytic_label = s.columns > 1 ? frame_label(scene, s)
+                                           : "Housner's rigid block under the scene's drive, impact ratio 1 − 1.5 sin²α";
     }
     const Series ref_curve{t, out.analytic};
     const Response ref = read_response(ref_curve, mark, s.alpha);
     const Trust trust = trust_of(scene, contact, s, ref_curve, ref.overturned);
-    const std::string model = winkler            ? "the Winkler base (dem's contact law, integrated independently)"
-                              : s.columns > 1 ? "the rigid frame of Makris & Vassiliou (rigid-contact engines: their step and contact slop)"
-                                              : "Housner's rigid block (rigid-contact engines: their step and contact slop)";
+    const char* slop = " (rigid-contact engines: their step and contact slop)";
+    const std::string model = winkler         ? "the Winkler base (dem's contact law, integrated independently)"
+                              : s.columns > 1 ? std::string("the rigid frame of Makris & Vassiliou") + slop
+                                              : std::string("Housner's rigid block") + slop;
     const double t_tol = time_tolerance(scene, s);
     char basis[300];
     std::snprintf(basis, sizeof basis, "%s; 2 %% plus 0.5 %% of α = %.3g rad", model.c_str(), 0.005 * s.alpha);
@@ -260,7 +262,8 @@ CaseAnalysis analyse_ground(const Scene& scene, const std::vector<Sample>& sampl
     }
     const double said = ref.overturned ? 1.0 : 0.0, did = run.overturned ? 1.0 : 0.0;
     const char* rule = "overturned: |θ| reached π/3, or ended beyond α";
-    const std::string verdict_basis = (winkler ? "as the Winkler base; " : s.columns > 1 ? "as the rigid frame; " : "as Housner's block; ") + std::string(rule);
+    const char* as = winkler ? "as the Winkler base; " : s.columns > 1 ? "as the rigid frame; " : "as Housner's block; ";
+    const std::string verdict_basis = as + std::string(rule);
     if (!winkler && scene.contact.restitution > 0.0)
         out.metrics.push_back(info("overturns (1 yes, 0 no)", "", did, said,
                                    "the scene's restitution bounces the rigid engines' impacts; Housner's do not"));

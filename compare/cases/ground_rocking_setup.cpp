@@ -135,7 +135,8 @@ void require_upright_box(const Scene& scene, const BlockDef& d, const char* role
     for (const auto& c : d.corners)
         for (int k = 0; k < 3; ++k)
             if (std::min(std::abs(c[k] - lo[k]), std::abs(c[k] - hi[k])) > 1e-9 * (hi - lo).maxCoeff())
-                throw refuse(scene, "blocks." + d.name + ": the " + role + " must be rectangular (its corners on a box in its frame)");
+                throw refuse(scene, "blocks." + d.name + ": the " + role +
+                                        " must be rectangular (its corners on a box in its frame)");
 }
 
 /// the block stands wholly on the top of one fixed block: its four lowest corners inside that top
@@ -190,7 +191,8 @@ void read_frame(const Scene& scene, const BlockDef& d, GroundSetup& out) {
             beam = int(i);
         } else {
             throw refuse(scene, "blocks." + b.name + ": neither a column standing beside '" + d.name +
-                                    "' nor a beam on its top: the oracles model one block, or a frame of equal columns under one beam");
+                                    "' nor a beam on its top: the oracles model one block, or a frame of equal columns "
+                                    "under one beam");
         }
     }
     if (beam < 0 || columns.size() < 2)
@@ -234,8 +236,9 @@ void read_frame(const Scene& scene, const BlockDef& d, GroundSetup& out) {
             if (w.z() < top - 0.01 * height) continue;
             const Vec3 l = cap.orientation.conjugate() * (w - cap.position);
             if (l.x() < lo.x() - eps || l.x() > hi.x() + eps || l.y() < lo.y() - eps || l.y() > hi.y() + eps)
-                throw refuse(scene, "blocks." + cap.name + ": the beam must cover the top of every column, and a top corner of '" +
-                                        col.name + "' lies beyond it");
+                throw refuse(scene, "blocks." + cap.name +
+                                        ": the beam must cover the top of every column, and a top corner of '" + col.name +
+                                        "' lies beyond it");
         }
     }
     // every block of the frame driven as the column, at its centre: a [ground_motion] does that
