@@ -273,8 +273,9 @@ void MujocoBackend::build(const Scene& scene, const RunOptions& options) {
          "2.2.2's box-box collider gives duplicate and phantom deep points for equal boxes face on face)";
     note(n);
     n << "friction: mu " << scene_.contact.friction << ", " << p.cone
-      << " cone; soft constraint: a block held by friction creeps at (1-d)*timeconst*a/(2*impratio) for a "
-         "shear acceleration a (impratio " << p.impratio << "); no elastic stick before slip"
+      << " cone; soft constraint: a block held by friction creeps at (1-d)*timeconst*a/(2*k) for a shear "
+         "acceleration a (friction rows' impedance d " << kFrictionImpedance << ", stiffened by k = " << friction_impratio
+      << "); no elastic stick before slip"
       << "; a sliding block rises off its base (MuJoCo's convex model: slip comes with normal motion), by more "
          "the faster it slides"
       << (matched_ ? ": the elliptic cone's middle zone pushes the contact apart, which on undamped springs "
