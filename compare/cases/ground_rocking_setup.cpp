@@ -282,6 +282,14 @@ GroundSetup read_ground_setup(const Scene& scene) {
     const int a = scene.reference->block;
     const BlockDef& d = scene.blocks.at(size_t(a));
     require_upright_box(scene, d, "block");
+    // a block resting on free blocks (the beam of a frame, a cap): the reference is one of those
+    {
+        const auto [bottom, top] = heights(d);
+        for (const auto& b : scene.blocks)
+            if (!b.fixed && b.name != d.name && std::abs(heights(b).second - bottom) <= 0.01 * (top - bottom))
+                throw refuse(scene, "reference.block = \"" + d.name + "\" rests on block '" + b.name +
+                                        "': name a block that stands on the fixed base (for a frame, one of its columns)");
+    }
     require_support(scene, d);
     Vec3 lo = Vec3::Constant(1e300), hi = Vec3::Constant(-1e300);
     for (const auto& c : d.corners) lo = lo.cwiseMin(c), hi = hi.cwiseMax(c);

@@ -355,6 +355,12 @@ block = "P1"
 )",
                      std::string(CAIRN_SOURCE_DIR) + "/scenarios/earthquake/capped_post.toml"),
          "blocks.cap: the oracles model one block, or a frame of two or more equal columns");
+    // the lintel named as the reference block: the frame is judged on a column
+    {
+        Scene x = frame();
+        x.reference->block = x.block_index("L");
+        says(x, "reference.block = \"L\" rests on block 'P1': name a block that stands on the fixed base");
+    }
     // posts in a line across the drive: they and the lintel could rock as one body about their
     // common edge (measured on a colonnade shaken across its line: the rigid engines disagreed with
     // each other and with the frame, first peaks 0.019 to 0.13 rad against its 0.015)
