@@ -117,8 +117,8 @@ double leaves_band(const metrics::Series& ref, const std::vector<double>& c, con
     for (size_t i = 0, lo = 0; i < t.size(); ++i) {
         while (t[lo] < t[i] - window) ++lo;
         // the range of the line over [t_i − window, t_i + window]: its ends and the rows between
-        double y_min = std::min(metrics::interpolate(ref, t[i] - window), metrics::interpolate(ref, t[i] + window));
-        double y_max = std::max(metrics::interpolate(ref, t[i] - window), metrics::interpolate(ref, t[i] + window));
+        const double y_before = metrics::interpolate(ref, t[i] - window), y_after = metrics::interpolate(ref, t[i] + window);
+        double y_min = std::min(y_before, y_after), y_max = std::max(y_before, y_after);
         for (size_t j = lo; j < t.size() && t[j] <= t[i] + window; ++j) {
             y_min = std::min(y_min, ref.y[j]);
             y_max = std::max(y_max, ref.y[j]);

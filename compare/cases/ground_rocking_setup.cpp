@@ -48,11 +48,17 @@ void read_drive(const Scene& scene, const BlockDef& d, double size, GroundSetup&
     out.drive = reference_drive(scene);
 }
 
+/// the drive's breaks and their midpoints: it is linear between its breaks, so these see all of it
+std::vector<double> drive_samples(const std::vector<double>& breaks) {
+    std::vector<double> at = breaks;
+    for (size_t i = 0; i + 1 < breaks.size(); ++i) at.push_back(0.5 * (breaks[i] + breaks[i + 1]));
+    return at;
+}
+
 /// the one horizontal direction of the drive (it is linear between its breaks, so sampling them
 /// and their midpoints sees all of it); throws when it has none, turns, or lifts the block off
 void read_direction(const Scene& scene, const BlockDef& d, GroundSetup& out) {
-    std::vector<double> at = out.breaks;
-    for (size_t i = 0; i + 1 < out.breaks.size(); ++i) at.push_back(0.5 * (out.breaks[i] + out.breaks[i + 1]));
+    const std::vector<double> at = drive_samples(out.breaks);
     Vec3 largest = Vec3::Zero();
     for (double t : at) {
         const Vec3 f = out.drive(t), h(f.x(), f.y(), 0.0);
@@ -213,6 +219,9 @@ void read_frame(const Scene& scene, const BlockDef& d, GroundSetup& out) {
                                 "along the drive (its plane)");
     const BlockDef& cap = scene.blocks[size_t(beam)];
     require_upright_box(scene, cap, "beam");
+    Vec3 cap_lo = Vec3::Constant(1e300), cap_hi = Vec3::Constant(-1e300);
+    for (const auto& k : cap.corners) cap_lo = cap_lo.cwiseMin(k), cap_hi = cap_hi.cwiseMax(k);
+    const double eps = 1e-9 * (cap_hi - cap_lo).maxCoeff();
     for (int c : columns) {
         const BlockDef& col = scene.blocks[size_t(c)];
         if (c != a) {
@@ -228,28 +237,28 @@ void read_frame(const Scene& scene, const BlockDef& d, GroundSetup& out) {
                                         "' (size across and along the drive, height, mass): they rock together");
         }
         // the beam covers the column's top: its four top corners inside the beam's bottom face
-        Vec3 lo = Vec3::Constant(1e300), hi = Vec3::Constant(-1e300);
-        for (const auto& k : cap.corners) lo = lo.cwiseMin(k), hi = hi.cwiseMax(k);
-        const double eps = 1e-9 * (hi - lo).maxCoeff();
         for (const auto& k : col.corners) {
             const Vec3 w = col.position + col.orientation * k;
             if (w.z() < top - 0.01 * height) continue;
             const Vec3 l = cap.orientation.conjugate() * (w - cap.position);
-            if (l.x() < lo.x() - eps || l.x() > hi.x() + eps || l.y() < lo.y() - eps || l.y() > hi.y() + eps)
+            if (l.x() < cap_lo.x() - eps || l.x() > cap_hi.x() + eps || l.y() < cap_lo.y() - eps || l.y() > cap_hi.y() + eps)
                 throw refuse(scene, "blocks." + cap.name +
                                         ": the beam must cover the top of every column, and a top corner of '" + col.name +
                                         "' lies beyond it");
         }
     }
     // every block of the frame driven as the column, at its centre: a [ground_motion] does that
-    std::vector<double> at = out.breaks;
-    for (size_t i = 0; i + 1 < out.breaks.size(); ++i) at.push_back(0.5 * (out.breaks[i] + out.breaks[i + 1]));
-    double largest = 0.0;
-    for (double t : at) largest = std::max(largest, out.drive(t).norm());
-    std::vector<int> members = columns;
-    members.push_back(beam);
+    const std::vector<double> at = drive_samples(out.breaks);
     std::vector<std::vector<const LoadDef*>> loads(scene.blocks.size());
     for (const auto& l : scene.loads) loads[size_t(l.block)].push_back(&l);
+    std::vector<Vec3> column_drive;
+    double largest = 0.0;
+    for (double t : at) {
+        column_drive.push_back(drive_of(loads[size_t(a)], m_column, t));
+        largest = std::max(largest, column_drive.back().norm());
+    }
+    std::vector<int> members = columns;
+    members.push_back(beam);
     for (int b : members) {
         const BlockDef& blk = scene.blocks[size_t(b)];
         const Vec3 centre = mass_properties(blk.corners, 1.0).centre;
@@ -258,8 +267,8 @@ void read_frame(const Scene& scene, const BlockDef& d, GroundSetup& out) {
             if (!l->body && (l->point - centre).norm() > 1e-9 * height)
                 throw refuse(scene, "a load on block '" + blk.name + "' acts off its centre of mass: the frame's oracle drives "
                                     "every block at its centre (a [ground_motion])");
-        for (double t : at)
-            if ((drive_of(loads[size_t(b)], m, t) - drive_of(loads[size_t(a)], m_column, t)).norm() > 1e-9 * largest)
+        for (size_t i = 0; i < at.size(); ++i)
+            if ((drive_of(loads[size_t(b)], m, at[i]) - column_drive[i]).norm() > 1e-9 * largest)
                 throw refuse(scene, "block '" + blk.name + "' is driven unlike '" + d.name +
                                         "' per unit mass: the frame's oracle shakes every block alike (a [ground_motion])");
     }
