@@ -119,8 +119,9 @@ double apply_beyond(const BeyondCell& in, Block& hb, int f, Block& tb, int tf, s
                 if (cut < 0 || cut >= in.count || cut == in.side_count) continue;
                 if (cut < in.side_count && in.caps[cut].corner >= 0) continue;
                 const EdgeForce e = edge_force(poly, i, in.c, in.n, cons[size_t(cut)], r.slope, in.kn, &depth);
+                // (on the target at the point itself: it pushes along the plane, see the cell's edges)
                 if (!e.force.isZero(0.0))
-                    put(hit_weights(part, e.point), target_weights(e.point, -1), e.force, e.force.normalized());
+                    put(hit_weights(part, e.point), node_weights(tb, tf, e.point), e.force, e.force.normalized());
             }
         }
         if (!(d1 > 0.0)) continue;

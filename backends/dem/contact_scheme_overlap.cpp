@@ -376,7 +376,11 @@ void ContactSet::evaluate_overlap(std::vector<Block>& blocks, double dt, long be
                                         add_triangle_weights({x0, x1, centre_p}, triangle_xi(k), e.point, tn, 1.0, w);
                                         eh = face_node_weights(hb, c.hit_face, w);
                                     }
-                                    const NodeWeights et = tb.deformable ? plane_weights(tq, tb.mesh.faces[tf], ct, nt, e.point) : node_weights(tb, tf, e.point);
+                                    // on the target at the same point (a collinear pair): it
+                                    // pushes along the plane, and a deformable target's plane
+                                    // weights would put it at the point's projection, a couple
+                                    // that made energy as two columns pressed side by side
+                                    const NodeWeights et = node_weights(tb, tf, e.point);
                                     // a push off the edge: all of it normal in the output
                                     const SubForce edge{eh, et, e.force, e.force.normalized(), eh, et};
                                     if (keep_forces) c.sub_forces.push_back(edge);
