@@ -49,9 +49,11 @@ struct BeyondCell {
     const Quad* hit_face = nullptr;
     const Quad* target_face = nullptr;
     double kn = 0.0;   ///< N/m³
+    double scale = 1.0;   ///< the weight of these constraints' rule (the facing rule's blend): every force times it
 };
 
-/// the energy stored beyond the capped cuts of one cell (J); its forces are spread on the blocks, or
+/// the energy stored beyond the capped cuts of one cell (J, not scaled); its forces, times
+/// in.scale, are spread on the blocks, or
 /// kept in `kept` when given (hit face f of hb on target face tf of tb). A deformable hitting face
 /// takes each triangle's forces by their barycentric weights, without the tilt couple (as the
 /// region before the cut); a deformable target takes the forces along o's normal by the weights of

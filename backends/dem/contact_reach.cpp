@@ -15,7 +15,8 @@ namespace cairn::dem {
 // strip of width d along the edge would drop in and out as d changes
 int side_constraints(const PairGeometry& g, int s, const Vec3& hit_normal, bool loose,
                      std::array<Affine, kMaxSideConstraints>& out, const Quad* hit_face,
-                     std::array<ReachCap, kMaxSideConstraints>* caps, double motion) {
+                     std::array<ReachCap, kMaxSideConstraints>* caps, double motion,
+                     const std::array<signed char, 6>* facing_given) {
     int k = 0;
     const Vec3& ns = g.normal[s];
     const double cs = ns.dot(g.centre[s]);
@@ -24,7 +25,8 @@ int side_constraints(const PairGeometry& g, int s, const Vec3& hit_normal, bool 
         const Vec3& no = g.normal[o];
         const double co = no.dot(g.centre[o]);
         out[k++] = Affine{-no, co + g.flush_tol};
-        const bool facing = !loose && hit_normal.dot(no) < -1e-3;
+        const signed char given = facing_given ? (*facing_given)[size_t(o)] : -1;
+        const bool facing = !loose && (given >= 0 ? given == 1 : hit_normal.dot(no) < -kFacingBegin);
         double tol = facing ? 0.0 : g.closer_tol;
         if (caps) (*caps)[size_t(k)] = ReachCap{};
         if (loose) {

@@ -22,6 +22,24 @@ constexpr double kBeyondTaper = 0.25;
 /// most constraints of one target side: depth, 4 face edges, and per other side flush and entering
 constexpr int kMaxSideConstraints = 16;
 
+/// overlap scheme, the facing rule: a hitting side faces another side o of the target when the
+/// product of their outward normals c = n_h·n_o is below −kFacingBegin (it hits o too, and s keeps
+/// no point nearer to o); fully from −kFacingEnd, and blended over the band between, so that the
+/// energy does not jump as a side square to o turns past it (docs/dem.md, overlap scheme)
+constexpr double kFacingBegin = 1e-3;
+constexpr double kFacingEnd = 2e-2;
+
+/// the weight of the rule for a side not faced at c = n_h·n_o (the rest, 1 − w, is the faced rule):
+/// 1 from −kFacingBegin up, 0 from −kFacingEnd down, linear between (dimensionless)
+inline double not_facing_weight(double c) {
+    if (!(c < -kFacingBegin)) return 1.0;
+    if (!(c > -kFacingEnd)) return 0.0;
+    return (c + kFacingEnd) / (kFacingEnd - kFacingBegin);
+}
+
+/// dw/dc of not_facing_weight inside its band
+constexpr double kFacingSlope = 1.0 / (kFacingEnd - kFacingBegin);
+
 /// The affine constraints of target side s that do not depend on the target face (docs/dem.md,
 /// overlap scheme): behind every other side plane (flush within flush_tol) and not entering
 /// through another side. `hit_normal` is the hitting side's outward unit normal; `loose` gives
@@ -29,7 +47,8 @@ constexpr int kMaxSideConstraints = 16;
 /// over any orientation the blocks reach), widened to cover the region beyond a capped cut where
 /// `hit_face` may be capped while its points move up to `motion` (m) relative to the target.
 /// Otherwise, with `hit_face`, the closer tolerance of a side o the hitting side does not face is
-/// at most how far the face's corners reach behind o's plane.
+/// at most how far the face's corners reach behind o's plane. `facing`, where given, says per side
+/// o whether the hitting side faces it (1) or not (0); elsewhere (−1) c < −kFacingBegin decides.
 /// Returns the count written to `out`.
 /// A closer constraint whose tolerance is the hitting face's reach behind side o: its offset moves
 /// with the face's corner `corner` (index into the face's quad) along o's outward normal.
@@ -40,7 +59,8 @@ struct ReachCap {
 
 int side_constraints(const PairGeometry& g, int s, const Vec3& hit_normal, bool loose,
                      std::array<Affine, kMaxSideConstraints>& out, const Quad* hit_face = nullptr,
-                     std::array<ReachCap, kMaxSideConstraints>* caps = nullptr, double motion = 0.0);
+                     std::array<ReachCap, kMaxSideConstraints>* caps = nullptr, double motion = 0.0,
+                     const std::array<signed char, 6>* facing = nullptr);
 
 /// true when hitting face f of block h may act on block t at some step before the next refresh,
 /// while no point of either block moves more than half of `margin` (m) nor turns more than

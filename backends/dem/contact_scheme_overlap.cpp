@@ -17,6 +17,18 @@ namespace {
 
 constexpr int kMaxSubdivision = 16;   // the scene reader's bound on contact.subdivision
 constexpr int kMaxConstraints = kMaxSideConstraints;
+constexpr int kMaxBlend = 2;   // other sides in the facing rule's band blended at once (more: the nearer rule)
+
+// the constraints of a target side under one choice of the facing rule for each other side in its
+// band (contact_reach.hpp), and that choice's weight in the blend
+struct SideRule {
+    std::array<Affine, kMaxConstraints> cons;
+    std::array<ReachCap, kMaxSideConstraints> caps;
+    int side_count = 0, count = 0;
+    bool capped = false, live = false;
+    double weight = 1.0;
+    int not_faced = 0;   // bit i: band side i taken as not faced
+};
 
 }  // namespace
 
@@ -24,8 +36,7 @@ void ContactSet::evaluate_overlap(std::vector<Block>& blocks, double dt, long be
     PairGeometry g;
     const int n = std::clamp(law_.subdivision, 1, kMaxSubdivision);
     std::array<Vec3, (kMaxSubdivision + 1) * (kMaxSubdivision + 1)> grid;   // sub-cell corners
-    std::array<Affine, kMaxConstraints> cons;
-    std::array<ReachCap, kMaxSideConstraints> caps;
+    std::array<SideRule, 1 << kMaxBlend> rules;
     for (long ci = begin; ci < end; ++ci) {
         Candidate& c = candidates_[size_t(ci)];
         ContactTotals& tot = c.totals;
@@ -55,15 +66,48 @@ void ContactSet::evaluate_overlap(std::vector<Block>& blocks, double dt, long be
                     }
                     return false;
                 };
-                const int side_count = side_constraints(g, s, frames_[size_t(c.hit_block)].normal[size_t(hit_side)], false, cons, &hq, &caps);
-                // a capped cut keeps the region beyond it (contact_overlap_beyond.hpp): one that
-                // misses the face leaves it to that region
-                bool capped = false;
-                for (int k = 0; k < side_count; ++k) capped = capped || caps[size_t(k)].corner >= 0;
-                bool missed = false;
-                for (int k = 0; k < side_count && !missed; ++k)
-                    if (!capped || caps[size_t(k)].corner < 0) missed = missed_by(cons.data() + k, cons.data() + k + 1);
-                if (missed) continue;
+                // the facing rule of each other side o: faced or not, and inside its band both,
+                // weighted by w(n_h·n_o) (contact_reach.hpp), each choice one rule for the cells
+                const Vec3& nh = frames_[size_t(c.hit_block)].normal[size_t(hit_side)];
+                std::array<signed char, 6> facing_of;
+                std::array<int, kMaxBlend> band{};
+                std::array<double, kMaxBlend> band_w{};
+                int nb = 0;
+                for (int o = 0; o < 6; ++o) {
+                    facing_of[size_t(o)] = -1;
+                    if (o == s) continue;
+                    const double w = not_facing_weight(nh.dot(g.normal[size_t(o)]));
+                    if (w > 0.0 && w < 1.0 && nb < kMaxBlend) band[size_t(nb)] = o, band_w[size_t(nb++)] = w;
+                    else facing_of[size_t(o)] = w < 0.5 ? 1 : 0;
+                }
+                const int nrules = 1 << nb;
+                bool any_live = false;
+                for (int a = 0; a < nrules; ++a) {
+                    SideRule& r = rules[size_t(a)];
+                    r.weight = 1.0;
+                    r.not_faced = a;
+                    std::array<signed char, 6> f = facing_of;
+                    for (int i = 0; i < nb; ++i) {
+                        const bool not_faced = (a >> i) & 1;
+                        f[size_t(band[size_t(i)])] = not_faced ? 0 : 1;
+                        r.weight *= not_faced ? band_w[size_t(i)] : 1.0 - band_w[size_t(i)];
+                    }
+                    r.side_count = side_constraints(g, s, nh, false, r.cons, &hq, &r.caps, 0.0, &f);
+                    // a capped cut keeps the region beyond it (contact_overlap_beyond.hpp): one that
+                    // misses the face leaves it to that region
+                    r.capped = false;
+                    for (int k = 0; k < r.side_count; ++k) r.capped = r.capped || r.caps[size_t(k)].corner >= 0;
+                    bool missed = false;
+                    for (int k = 0; k < r.side_count && !missed; ++k)
+                        if (!r.capped || r.caps[size_t(k)].corner < 0) missed = missed_by(r.cons.data() + k, r.cons.data() + k + 1);
+                    r.live = !missed;
+                    any_live = any_live || r.live;
+                }
+                if (!any_live) continue;
+                // dU/dw of each band side (J): the blend's energy changes with w, so its force has
+                // a couple about n_h × n_o (applied after the side's cells)
+                std::array<double, kMaxBlend> dU_dw{};
+                int touched_face = -1;   // a target face of the side that took force (for the couple's weights)
                 if (!ready) {
                     ready = true;
                     for (const auto& p : hq) hbox.add(p);
@@ -80,8 +124,9 @@ void ContactSet::evaluate_overlap(std::vector<Block>& blocks, double dt, long be
                     const Vec3 nt = whole ? g.normal[s] : quad_normal(tq, Vec2::Zero());
                     Quad flat;
                     for (int i = 0; i < 4; ++i) flat[i] = tq[i] - nt.dot(tq[i] - ct) * nt;
-                    int nc = side_count;
-                    cons[nc++] = Affine{-nt, nt.dot(ct)};   // behind the face: d ≥ 0
+                    std::array<Affine, 5> face_cons;
+                    int nf = 0;
+                    face_cons[size_t(nf++)] = Affine{-nt, nt.dot(ct)};   // behind the face: d ≥ 0
                     // over the face: inside each edge; a face that is the whole side within the
                     // flush tolerance, as the other sides' planes (a face flush with the edge of
                     // an equal one is bounded by its own edge, which moves with it, and not by the
@@ -90,9 +135,14 @@ void ContactSet::evaluate_overlap(std::vector<Block>& blocks, double dt, long be
                     const double edge_tol = whole ? g.flush_tol : 0.0;
                     for (int i = 0; i < 4; ++i) {
                         const Vec3 a = nt.cross(flat[(i + 1) % 4] - flat[i]).normalized();
-                        cons[nc++] = Affine{a, -a.dot(flat[i]) + edge_tol};
+                        face_cons[size_t(nf++)] = Affine{a, -a.dot(flat[i]) + edge_tol};
                     }
-                    if (missed_by(cons.data() + side_count, cons.data() + nc)) continue;
+                    if (missed_by(face_cons.data(), face_cons.data() + nf)) continue;
+                    for (int a = 0; a < nrules; ++a) {
+                        SideRule& r = rules[size_t(a)];
+                        r.count = r.side_count;
+                        for (int k = 0; k < nf; ++k) r.cons[size_t(r.count++)] = face_cons[size_t(k)];
+                    }
                     for (int v = 0; v < n; ++v)
                         for (int u = 0; u < n; ++u) {
                             // the sub-cell's corners (grid indices): a rigid block's cell is planar
@@ -130,7 +180,11 @@ void ContactSet::evaluate_overlap(std::vector<Block>& blocks, double dt, long be
                                     for (int i = 0; i < 4; ++i) poly.p[size_t(i)] = grid[size_t(corner[size_t(i)])];
                                 }
                             };
-                            if (capped) {
+                            // each rule's energy in this cell (J, unweighted), for dU/dw
+                            std::array<double, 1 << kMaxBlend> energy{};
+                            for (int a = 0; a < nrules; ++a) {
+                                const SideRule& r = rules[size_t(a)];
+                                if (!r.live || !r.capped) continue;
                                 std::array<ClipPolygon, 4> pieces;
                                 BeyondCell bc;
                                 bc.parts = parts;
@@ -139,50 +193,85 @@ void ContactSet::evaluate_overlap(std::vector<Block>& blocks, double dt, long be
                                     piece(k, pieces[size_t(k)]);
                                     if (split) bc.piece_xi[size_t(k)] = triangle_xi(k);
                                 }
-                                bc.cons = cons.data();
-                                bc.side_count = side_count;
-                                bc.count = nc;
-                                bc.caps = caps.data();
+                                bc.cons = r.cons.data();
+                                bc.side_count = r.side_count;
+                                bc.count = r.count;
+                                bc.caps = r.caps.data();
                                 bc.g = &g;
                                 bc.c = ct;
                                 bc.n = nt;
                                 bc.hit_face = &hq;
                                 bc.target_face = &tq;
                                 bc.kn = law_.kn;
-                                tot.stored += apply_beyond(bc, hb, c.hit_face, tb, tf, keep_forces ? &c.sub_forces : nullptr);
+                                bc.scale = r.weight;
+                                energy[size_t(a)] = apply_beyond(bc, hb, c.hit_face, tb, tf, keep_forces ? &c.sub_forces : nullptr);
+                                tot.stored += r.weight * energy[size_t(a)];
                             }
-                            std::array<ClipPolygon, 4> polys;
-                            std::array<OverlapIntegrals, 4> part;
+                            // each rule's clipped pieces and integrals; the cell's are their blend
+                            std::array<std::array<ClipPolygon, 4>, 1 << kMaxBlend> polys;
+                            std::array<std::array<OverlapIntegrals, 4>, 1 << kMaxBlend> part;
+                            std::array<OverlapIntegrals, 1 << kMaxBlend> whole_in;
                             OverlapIntegrals in;
                             bool any = false;
-                            for (int k = 0; k < parts; ++k) {
-                                ClipPolygon& poly = polys[size_t(k)];
-                                piece(k, poly);
-                                for (int q = 0; q < nc && poly.n >= 3; ++q) clip(poly, cons[size_t(q)], q);
-                                if (poly.n < 3) {
-                                    poly.n = 0;
+                            for (int a = 0; a < nrules; ++a) {
+                                const SideRule& r = rules[size_t(a)];
+                                OverlapIntegrals& ra = whole_in[size_t(a)];
+                                ra = OverlapIntegrals{};
+                                for (int k = 0; k < parts; ++k) {
+                                    ClipPolygon& poly = polys[size_t(a)][size_t(k)];
+                                    piece(k, poly);
+                                    if (!r.live) poly.n = 0;
+                                    for (int q = 0; q < r.count && poly.n >= 3; ++q) clip(poly, r.cons[size_t(q)], q);
+                                    if (poly.n < 3) {
+                                        poly.n = 0;
+                                        continue;
+                                    }
+                                    any = true;
+                                    part[size_t(a)][size_t(k)] = integrate_depth(poly, ct, nt);
+                                    const OverlapIntegrals& pk = part[size_t(a)][size_t(k)];
+                                    if (!split) {
+                                        ra = pk;
+                                        continue;
+                                    }
+                                    ra.area += pk.area;
+                                    ra.d1 += pk.d1;
+                                    ra.d2 += pk.d2;
+                                    ra.moment += pk.moment;
+                                    ra.first += pk.first;
+                                }
+                                energy[size_t(a)] += 0.5 * law_.kn * ra.d2;
+                                if (nrules == 1) {
+                                    in = ra;
                                     continue;
                                 }
-                                any = true;
-                                part[size_t(k)] = integrate_depth(poly, ct, nt);
-                                const OverlapIntegrals& pk = part[size_t(k)];
-                                in.area += pk.area;
-                                in.d1 += pk.d1;
-                                in.d2 += pk.d2;
-                                in.moment += pk.moment;
-                                in.first += pk.first;
+                                in.area += r.weight * ra.area;
+                                in.d1 += r.weight * ra.d1;
+                                in.d2 += r.weight * ra.d2;
+                                in.moment += r.weight * ra.moment;
+                                in.first += r.weight * ra.first;
+                                in.tilt += r.weight * ra.tilt;
+                            }
+                            // dU/dw_i = Σ over rules of dweight/dw_i times the rule's energy
+                            for (int a = 0; a < nrules && nb > 0; ++a) {
+                                const SideRule& r = rules[size_t(a)];
+                                for (int i = 0; i < nb; ++i) {
+                                    const bool not_faced = (r.not_faced >> i) & 1;
+                                    const double wi = band_w[size_t(i)];
+                                    dU_dw[size_t(i)] += (not_faced ? r.weight / wi : -r.weight / (1.0 - wi)) * energy[size_t(a)];
+                                }
                             }
                             if (!any) continue;
-                            if (!split) in = part[0];
                             if (!(in.d1 > 0.0) || !(in.area > 0.0)) continue;
+                            touched_face = tf;
                             double dmax = 0.0;
                             // how deep a point is in the target: its distance to the nearest
                             // side (a sliver of a face crossing a side nearly square to it may lie
                             // up to the closer tolerance behind that side, yet just under the one
                             // it entered through)
-                            for (int k = 0; k < parts; ++k)
-                                for (int i = 0; i < polys[size_t(k)].n; ++i) {
-                                    const Vec3& p = polys[size_t(k)].p[size_t(i)];
+                            for (int a = 0; a < nrules; ++a)
+                              for (int k = 0; k < parts; ++k)
+                                for (int i = 0; i < polys[size_t(a)][size_t(k)].n; ++i) {
+                                    const Vec3& p = polys[size_t(a)][size_t(k)].p[size_t(i)];
                                     double d = nt.dot(ct - p);
                                     for (int o = 0; o < 6; ++o)
                                         if (o != s) d = std::min(d, g.normal[o].dot(g.centre[o] - p));
@@ -228,15 +317,18 @@ void ContactSet::evaluate_overlap(std::vector<Block>& blocks, double dt, long be
                                 constexpr double eta = 1e-12;   // as in pressure_centre()
                                 const double total = in.d1 + eta * in.area;
                                 for (int k = 0; k < 4; ++k) {
-                                    const OverlapIntegrals& pk = part[size_t(k)];
-                                    if (polys[size_t(k)].n == 0 || !(pk.area > 0.0)) continue;   // nothing of it in contact
                                     const auto txi = triangle_xi(k);
                                     std::array<Vec3, 3> x;
                                     for (int i = 0; i < 3; ++i) {
                                         const Vec3 p = quad_point(hq, txi[size_t(i)]);
                                         x[size_t(i)] = p + nt.dot(ct - p) * nt;
                                     }
-                                    add_triangle_weights(x, txi, pk.pressure_centre(), nt, (pk.d1 + eta * pk.area) / total, w);
+                                    for (int a = 0; a < nrules; ++a) {
+                                        const OverlapIntegrals& pk = part[size_t(a)][size_t(k)];
+                                        if (polys[size_t(a)][size_t(k)].n == 0 || !(pk.area > 0.0)) continue;   // nothing of it in contact
+                                        const double weight = nrules == 1 ? 1.0 : rules[size_t(a)].weight;
+                                        add_triangle_weights(x, txi, pk.pressure_centre(), nt, weight * (pk.d1 + eta * pk.area) / total, w);
+                                    }
                                 }
                                 wh_n = face_node_weights(hb, c.hit_face, w);
                             }
@@ -356,14 +448,21 @@ void ContactSet::evaluate_overlap(std::vector<Block>& blocks, double dt, long be
                             // barycentric weights in its triangle: without it a brick landing across
                             // the edges of another lost 7.4 % of its motion energy unbooked
                             anchor->edged = false;
+                            for (int a = 0; a < nrules; ++a)
                             for (int k = 0; k < parts; ++k) {
-                                const ClipPolygon& poly = polys[size_t(k)];
-                                const Vec3 slope = split ? part[size_t(k)].slope : in.slope;
+                                const SideRule& r = rules[size_t(a)];
+                                const double weight = nrules == 1 ? 1.0 : r.weight;
+                                const auto& caps = r.caps;
+                                const int side_count = r.side_count;
+                                const ClipPolygon& poly = polys[size_t(a)][size_t(k)];
+                                const Vec3 slope = split ? part[size_t(a)][size_t(k)].slope : whole_in[size_t(a)].slope;
                                 for (int i = 0; i < poly.n; ++i) {
                                     const int cut = int(poly.by[size_t(i)]) - 1;
                                     if (cut < 0 || cut == side_count) continue;
-                                    if (capped && cut < side_count && caps[size_t(cut)].corner >= 0) continue;   // joins the region beyond
-                                    const EdgeForce e = edge_force(poly, i, ct, nt, cons[size_t(cut)], slope, law_.kn);
+                                    if (r.capped && cut < side_count && caps[size_t(cut)].corner >= 0) continue;   // joins the region beyond
+                                    EdgeForce e = edge_force(poly, i, ct, nt, r.cons[size_t(cut)], slope, law_.kn);
+                                    e.force *= weight;
+                                    e.offset_gradient *= weight;
                                     if (e.force.isZero(0.0)) continue;
                                     anchor->edged = true;
                                     NodeWeights eh;
@@ -413,6 +512,30 @@ void ContactSet::evaluate_overlap(std::vector<Block>& blocks, double dt, long be
                             }
                             ++tot.active;
                         }
+                }
+                // the blend's couple: U = Σ weight·U_rule changes with w_i(c), c = n_h·n_o, and
+                // c turns with either block about n_h × n_o: −dU/dw·dw/dc·(n_h × n_o) on the
+                // hitting block and its opposite on the target, as a pair of opposite forces at
+                // the face's centre on both (the same points)
+                for (int i = 0; i < nb && touched_face >= 0; ++i) {
+                    const Vec3 tau = -dU_dw[size_t(i)] * kFacingSlope * nh.cross(g.normal[size_t(band[size_t(i)])]);
+                    const double tn = tau.norm();
+                    if (!(tn > 0.0)) continue;
+                    const Vec3 t = tau / tn;
+                    Vec3 e = t.cross(nh);
+                    if (e.norm() < 1e-6) e = t.cross(Vec3::UnitX());
+                    if (e.norm() < 1e-6) e = t.cross(Vec3::UnitY());
+                    e.normalize();
+                    const Vec3 w = e.cross(t);   // (ℓw) × (|τ|/ℓ)e = |τ|·t
+                    const double arm = hb.min_edge;
+                    const Vec3 centre = 0.25 * (hq[0] + hq[1] + hq[2] + hq[3]);
+                    for (const double side : {0.5, -0.5}) {
+                        const Vec3 x = centre + side * arm * w;
+                        const NodeWeights xh = node_weights(hb, c.hit_face, x), xt = node_weights(tb, touched_face, x);
+                        const SubForce couple{xh, xt, (2.0 * side * tn / arm) * e, e, xh, xt};
+                        if (keep_forces) c.sub_forces.push_back(couple);
+                        else couple.spread(hb, tb);
+                    }
                 }
             }
         }
