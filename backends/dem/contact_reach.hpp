@@ -30,15 +30,21 @@ constexpr double kFacingBegin = 1e-3;
 constexpr double kFacingEnd = 2e-2;
 
 /// the weight of the rule for a side not faced at c = n_h·n_o (the rest, 1 − w, is the faced rule):
-/// 1 from −kFacingBegin up, 0 from −kFacingEnd down, linear between (dimensionless)
+/// 1 from −kFacingBegin up, 0 from −kFacingEnd down, a smoothstep between (its slope, and with it
+/// the blend's couple, goes to zero at both ends) (dimensionless)
 inline double not_facing_weight(double c) {
     if (!(c < -kFacingBegin)) return 1.0;
     if (!(c > -kFacingEnd)) return 0.0;
-    return (c + kFacingEnd) / (kFacingEnd - kFacingBegin);
+    const double t = (c + kFacingEnd) / (kFacingEnd - kFacingBegin);
+    return t * t * (3.0 - 2.0 * t);
 }
 
-/// dw/dc of not_facing_weight inside its band
-constexpr double kFacingSlope = 1.0 / (kFacingEnd - kFacingBegin);
+/// dw/dc of not_facing_weight (1/dimensionless of c)
+inline double not_facing_slope(double c) {
+    if (!(c < -kFacingBegin) || !(c > -kFacingEnd)) return 0.0;
+    const double t = (c + kFacingEnd) / (kFacingEnd - kFacingBegin);
+    return 6.0 * t * (1.0 - t) / (kFacingEnd - kFacingBegin);
+}
 
 /// The affine constraints of target side s that do not depend on the target face (docs/dem.md,
 /// overlap scheme): behind every other side plane (flush within flush_tol) and not entering

@@ -71,13 +71,18 @@ void ContactSet::evaluate_overlap(std::vector<Block>& blocks, double dt, long be
                 const Vec3& nh = frames_[size_t(c.hit_block)].normal[size_t(hit_side)];
                 std::array<signed char, 6> facing_of;
                 std::array<int, kMaxBlend> band{};
-                std::array<double, kMaxBlend> band_w{};
+                std::array<double, kMaxBlend> band_w{}, band_slope{};
                 int nb = 0;
                 for (int o = 0; o < 6; ++o) {
                     facing_of[size_t(o)] = -1;
                     if (o == s) continue;
-                    const double w = not_facing_weight(nh.dot(g.normal[size_t(o)]));
-                    if (w > 0.0 && w < 1.0 && nb < kMaxBlend) band[size_t(nb)] = o, band_w[size_t(nb++)] = w;
+                    const double co = nh.dot(g.normal[size_t(o)]);
+                    const double w = not_facing_weight(co);
+                    if (w > 0.0 && w < 1.0 && nb < kMaxBlend) {
+                        band[size_t(nb)] = o;
+                        band_w[size_t(nb)] = w;
+                        band_slope[size_t(nb++)] = not_facing_slope(co);
+                    }
                     else facing_of[size_t(o)] = w < 0.5 ? 1 : 0;
                 }
                 const int nrules = 1 << nb;
@@ -518,7 +523,7 @@ void ContactSet::evaluate_overlap(std::vector<Block>& blocks, double dt, long be
                 // hitting block and its opposite on the target, as a pair of opposite forces at
                 // the face's centre on both (the same points)
                 for (int i = 0; i < nb && touched_face >= 0; ++i) {
-                    const Vec3 tau = -dU_dw[size_t(i)] * kFacingSlope * nh.cross(g.normal[size_t(band[size_t(i)])]);
+                    const Vec3 tau = -dU_dw[size_t(i)] * band_slope[size_t(i)] * nh.cross(g.normal[size_t(band[size_t(i)])]);
                     const double tn = tau.norm();
                     if (!(tn > 0.0)) continue;
                     const Vec3 t = tau / tn;

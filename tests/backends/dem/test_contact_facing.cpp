@@ -44,14 +44,18 @@ TEST_CASE("the facing rule's weight runs from not faced to faced across its band
     CHECK(not_facing_weight(-0.9) == 0.0);
     const double mid = -0.5 * (kFacingBegin + kFacingEnd);
     CHECK(not_facing_weight(mid) == Approx(0.5).epsilon(1e-12));
-    CHECK((not_facing_weight(mid + 1e-6) - not_facing_weight(mid - 1e-6)) / 2e-6 == Approx(kFacingSlope).epsilon(1e-6));
+    // its slope: the derivative of the weight, zero at both ends (the blend's couple fades)
+    for (const double c : {mid, -0.3 * kFacingBegin - 0.7 * kFacingEnd, -0.8 * kFacingBegin - 0.2 * kFacingEnd})
+        CHECK((not_facing_weight(c + 1e-8) - not_facing_weight(c - 1e-8)) / 2e-8 == Approx(not_facing_slope(c)).epsilon(1e-6));
+    CHECK(not_facing_slope(-kFacingBegin) == 0.0);
+    CHECK(not_facing_slope(-kFacingEnd) == 0.0);
 }
 
 TEST_CASE("a side turning past another side square to it keeps its energy continuous", "[dem][contact]") {
     // at the band's ends the rule changes; the energy of the points near B's +y edge (depth behind
     // the +x side larger than behind +y) must not jump there. The hard switch at c = −1e-3 dropped
     // them at once: measured 1.67 J of U = 170 J between yaw asin(1e-3) ∓ 1e-9. Now a step of
-    // 2e-9 rad moves U by |dU/dyaw|·2e-9 ≤ 1.67 J·kFacingSlope·2e-9 ~ 2e-7 J. At c = −1e-3 the
+    // 2e-9 rad moves U by |dU/dyaw|·2e-9 ≤ 1.67 J·(1.5/0.019)·2e-9 ~ 3e-7 J. At c = −1e-3 the
     // hitting side also starts to hit B's +y side (PairGeometry::faces), whose region there is
     // the sliver within the flush tolerance (3e-5 m) of that side's edge: ½kn·d²·3e-5 m·0.2 m
     // ~ 1e-3 J (measured 1.23e-3 J, gone with that threshold moved): 1e-5 of U bounds it there,
