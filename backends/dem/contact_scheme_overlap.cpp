@@ -37,6 +37,11 @@ void ContactSet::evaluate_overlap(std::vector<Block>& blocks, double dt, long be
     const int n = std::clamp(law_.subdivision, 1, kMaxSubdivision);
     std::array<Vec3, (kMaxSubdivision + 1) * (kMaxSubdivision + 1)> grid;   // sub-cell corners
     std::array<SideRule, 1 << kMaxBlend> rules;
+    // per cell, each rule's clipped pieces and their integrals (laid out once: every cell writes
+    // what it reads)
+    std::array<std::array<ClipPolygon, 4>, 1 << kMaxBlend> polys;
+    std::array<std::array<OverlapIntegrals, 4>, 1 << kMaxBlend> part;
+    std::array<OverlapIntegrals, 1 << kMaxBlend> whole_in;
     for (long ci = begin; ci < end; ++ci) {
         Candidate& c = candidates_[size_t(ci)];
         ContactTotals& tot = c.totals;
@@ -184,6 +189,7 @@ void ContactSet::evaluate_overlap(std::vector<Block>& blocks, double dt, long be
                                     poly.n = 4;
                                     for (int i = 0; i < 4; ++i) poly.p[size_t(i)] = grid[size_t(corner[size_t(i)])];
                                 }
+                                for (int i = 0; i < poly.n; ++i) poly.by[size_t(i)] = 0;   // edges as given
                             };
                             // each rule's energy in this cell (J, unweighted), for dU/dw
                             std::array<double, 1 << kMaxBlend> energy{};
@@ -213,9 +219,6 @@ void ContactSet::evaluate_overlap(std::vector<Block>& blocks, double dt, long be
                                 tot.stored += r.weight * energy[size_t(a)];
                             }
                             // each rule's clipped pieces and integrals; the cell's are their blend
-                            std::array<std::array<ClipPolygon, 4>, 1 << kMaxBlend> polys;
-                            std::array<std::array<OverlapIntegrals, 4>, 1 << kMaxBlend> part;
-                            std::array<OverlapIntegrals, 1 << kMaxBlend> whole_in;
                             OverlapIntegrals in;
                             bool any = false;
                             for (int a = 0; a < nrules; ++a) {
