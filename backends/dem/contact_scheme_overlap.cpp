@@ -276,10 +276,9 @@ void ContactSet::evaluate_overlap(std::vector<Block>& blocks, double dt, long be
                             // side (a sliver of a face crossing a side nearly square to it may lie
                             // up to the closer tolerance behind that side, yet just under the one
                             // it entered through)
-                            for (int a = 0; a < nrules; ++a)
-                              for (int k = 0; k < parts; ++k)
-                                for (int i = 0; i < polys[size_t(a)][size_t(k)].n; ++i) {
-                                    const Vec3& p = polys[size_t(a)][size_t(k)].p[size_t(i)];
+                            for (int ak = 0; ak < nrules * parts; ++ak)   // each rule's pieces
+                                for (int i = 0; i < polys[size_t(ak / parts)][size_t(ak % parts)].n; ++i) {
+                                    const Vec3& p = polys[size_t(ak / parts)][size_t(ak % parts)].p[size_t(i)];
                                     double d = nt.dot(ct - p);
                                     for (int o = 0; o < 6; ++o)
                                         if (o != s) d = std::min(d, g.normal[o].dot(g.centre[o] - p));
@@ -321,6 +320,7 @@ void ContactSet::evaluate_overlap(std::vector<Block>& blocks, double dt, long be
                             else {
                                 // each triangle's pressure centre, by its barycentric weights on
                                 // its (projected) corners, each a point of the face's bilinear map
+                                // (inside the facing rule's band, each rule's triangles by its weight)
                                 std::array<double, 4> w{};
                                 constexpr double eta = 1e-12;   // as in pressure_centre()
                                 const double total = in.d1 + eta * in.area;
@@ -456,8 +456,8 @@ void ContactSet::evaluate_overlap(std::vector<Block>& blocks, double dt, long be
                             // barycentric weights in its triangle: without it a brick landing across
                             // the edges of another lost 7.4 % of its motion energy unbooked
                             anchor->edged = false;
-                            for (int a = 0; a < nrules; ++a)
-                            for (int k = 0; k < parts; ++k) {
+                            for (int ak = 0; ak < nrules * parts; ++ak) {   // each rule's pieces
+                                const int a = ak / parts, k = ak % parts;
                                 const SideRule& r = rules[size_t(a)];
                                 const double weight = nrules == 1 ? 1.0 : r.weight;
                                 const auto& caps = r.caps;
