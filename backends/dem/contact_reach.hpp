@@ -39,7 +39,7 @@ inline double not_facing_weight(double c) {
     return t * t * (3.0 - 2.0 * t);
 }
 
-/// dw/dc of not_facing_weight (1/dimensionless of c)
+/// dw/dc of not_facing_weight at c (dimensionless): zero outside the band and at its ends
 inline double not_facing_slope(double c) {
     if (!(c < -kFacingBegin) || !(c > -kFacingEnd)) return 0.0;
     const double t = (c + kFacingEnd) / (kFacingEnd - kFacingBegin);
