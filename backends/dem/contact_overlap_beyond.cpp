@@ -98,18 +98,11 @@ double apply_beyond(const BeyondCell& in, Block& hb, int f, Block& tb, int tf, s
             // ½kn·n × ∫d_B²·∇h dA (∇h the gradient of the face's depth behind the plane), as a
             // pair of opposite forces (the target takes the opposite couple)
             const Vec3 tau = 0.5 * in.kn * in.n.cross(r.tilt);
-            const double tn = tau.norm();
-            if (!split && tn > 0.0) {
-                const Vec3 t = tau / tn;
-                Vec3 e = t.cross(in.n);
-                if (e.norm() < 1e-6) e = t.cross(Vec3::UnitX());
-                if (e.norm() < 1e-6) e = t.cross(Vec3::UnitY());
-                e.normalize();
-                const Vec3 w = e.cross(t);   // (ℓw) × (|τ|/ℓ)e = |τ|·t
-                const double arm = hb.min_edge;
-                for (const double side : {0.5, -0.5}) {
-                    const Vec3 x = xb + side * arm * w;
-                    put(node_weights(hb, f, x), node_weights(tb, tf, x), (2.0 * side * tn / arm) * e, in.n);
+            if (!split && tau.norm() > 0.0) {
+                const ForcePair pair = couple_as_pair(tau, in.n, hb.min_edge);
+                for (const double side : {1.0, -1.0}) {
+                    const Vec3 x = xb + side * pair.offset;
+                    put(node_weights(hb, f, x), node_weights(tb, tf, x), side * pair.force, in.n);
                 }
             }
             // where the region ends on a constraint fixed to the target with depth: the edge

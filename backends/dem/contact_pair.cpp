@@ -208,6 +208,17 @@ NodeWeights plane_weights(const Quad& q, const std::array<int, 4>& nodes, const 
     return w;
 }
 
+ForcePair couple_as_pair(const Vec3& tau, const Vec3& line, double arm) {
+    const double tn = tau.norm();
+    const Vec3 t = tau / tn;
+    Vec3 e = t.cross(line);
+    if (e.norm() < 1e-6) e = t.cross(Vec3::UnitX());
+    if (e.norm() < 1e-6) e = t.cross(Vec3::UnitY());
+    e.normalize();
+    const Vec3 w = e.cross(t);   // (ℓw) × (|τ|/ℓ)e = |τ|·t
+    return ForcePair{0.5 * arm * w, (tn / arm) * e};
+}
+
 // barycentric coordinates of x in the triangle (x0, x1, x2), all on a plane of unit normal n
 std::array<double, 3> barycentric(const Vec3& x, const Vec3& x0, const Vec3& x1, const Vec3& x2, const Vec3& n) {
     const double den = (x1 - x0).cross(x2 - x0).dot(n);

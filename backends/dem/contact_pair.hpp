@@ -114,6 +114,16 @@ NodeWeights node_weights(const Block& b, int face, const Vec3& x);
 /// unit normal n at the centre): Σw = 1 and Σw·q = xs projected on the plane
 NodeWeights plane_weights(const Quad& q, const std::array<int, 4>& nodes, const Vec3& c, const Vec3& n, const Vec3& xs);
 
+/// A couple as a pair of opposite forces: `force` at `centre` + `offset` and −force at
+/// `centre` − offset, their moment τ (docs/dem.md, overlap scheme)
+struct ForcePair {
+    Vec3 offset = Vec3::Zero();   ///< half the pair's arm, m
+    Vec3 force = Vec3::Zero();    ///< N
+};
+/// the pair of arm `arm` (m) whose moment is tau (N·m, not zero), its forces square to tau and to
+/// `line` (a direction the forces should cross, e.g. a face normal; another axis where it is along tau)
+ForcePair couple_as_pair(const Vec3& tau, const Vec3& line, double arm);
+
 /// barycentric coordinates of x in the triangle (x0, x1, x2), all on a plane of unit normal n
 std::array<double, 3> barycentric(const Vec3& x, const Vec3& x0, const Vec3& x1, const Vec3& x2, const Vec3& n);
 

@@ -527,20 +527,14 @@ void ContactSet::evaluate_overlap(std::vector<Block>& blocks, double dt, long be
                 // the face's centre on both (the same points)
                 for (int i = 0; i < nb && touched_face >= 0; ++i) {
                     const Vec3 tau = -dU_dw[size_t(i)] * band_slope[size_t(i)] * nh.cross(g.normal[size_t(band[size_t(i)])]);
-                    const double tn = tau.norm();
-                    if (!(tn > 0.0)) continue;
-                    const Vec3 t = tau / tn;
-                    Vec3 e = t.cross(nh);
-                    if (e.norm() < 1e-6) e = t.cross(Vec3::UnitX());
-                    if (e.norm() < 1e-6) e = t.cross(Vec3::UnitY());
-                    e.normalize();
-                    const Vec3 w = e.cross(t);   // (ℓw) × (|τ|/ℓ)e = |τ|·t
-                    const double arm = hb.min_edge;
+                    if (!(tau.norm() > 0.0)) continue;
+                    const ForcePair pair = couple_as_pair(tau, nh, hb.min_edge);
                     const Vec3 centre = 0.25 * (hq[0] + hq[1] + hq[2] + hq[3]);
-                    for (const double side : {0.5, -0.5}) {
-                        const Vec3 x = centre + side * arm * w;
+                    for (const double side : {1.0, -1.0}) {
+                        const Vec3 x = centre + side * pair.offset;
                         const NodeWeights xh = node_weights(hb, c.hit_face, x), xt = node_weights(tb, touched_face, x);
-                        const SubForce couple{xh, xt, (2.0 * side * tn / arm) * e, e, xh, xt};
+                        const Vec3 force = side * pair.force;
+                        const SubForce couple{xh, xt, force, force.normalized(), xh, xt};
                         if (keep_forces) c.sub_forces.push_back(couple);
                         else couple.spread(hb, tb);
                     }
