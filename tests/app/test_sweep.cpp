@@ -81,7 +81,7 @@ TEST_CASE("cairn sweep: local jobs and reversed shards merge into identical tabl
     }
 }
 
-TEST_CASE("cairn sweep: --resume runs only what is missing; a directory is not reused by mistake", "[app][sweep]") {
+TEST_CASE("cairn sweep: --resume runs only what is missing, a directory is not reused by mistake", "[app][sweep]") {
     const auto d = fresh_dir("sweep_resume");
     const std::string plan = small_plan(d);
     const std::string out = (d / "out").string();
@@ -136,7 +136,7 @@ TEST_CASE("cairn sweep refuses a bad plan with exit 2 and writes nothing", "[app
     CHECK_THAT(n.err, Contains("not a sweep directory"));
 }
 
-TEST_CASE("SIGINT stops cairn sweep keeping finished results, exit 130; --resume completes it", "[app][kill][sweep]") {
+TEST_CASE("SIGINT stops cairn sweep keeping finished results, exit 130, --resume completes it", "[app][kill][sweep]") {
     const auto d = fresh_dir("sweep_interrupt");
     const std::string plan = small_plan(d);
     const fs::path out = d / "out";

@@ -73,7 +73,7 @@ TEST_CASE("paper case (c): H = 0.5 W slides at a = (H/W - mu) g for mu = 0.4", "
     CHECK(std::abs(e.total() - energy0) < 1e-3 * e.external);
 }
 
-TEST_CASE("paper case (c): mu = 0.6 holds; H at the contact plane gives exactly H/(ks A)",
+TEST_CASE("paper case (c): mu = 0.6 holds, H at the contact plane gives exactly H/(ks A)",
           "[dem][paper][friction]") {
     const double m = 325.0, pull = 0.5 * m * 9.81;
     const double u_ref = pull / (3e7 * 0.25);

@@ -144,7 +144,7 @@ TEST_CASE("dem time step: a lumped hex8 cube's critical step is its uniform dila
     }
 }
 
-TEST_CASE("dem time step: only blocks within reach pair up; apart, each is a mass on its springs", "[dem][time_step]") {
+TEST_CASE("dem time step: only blocks within reach pair up, apart, each is a mass on its springs", "[dem][time_step]") {
     // ks = 0 on the overlap scheme: a cube's stiffest mode is the vertical k = kn·A on mass m,
     // so alone on a base its critical step is the closed form 2·√(m/k); two free cubes on each
     // other form springs in series of equal masses, ω² = 2k/m, so 2·√(m/2k)

@@ -188,7 +188,7 @@ TEST_CASE("rocking oracle: uplift at (g + a_v) tan α, located exactly", "[oracl
     CHECK(res.max_abs_theta == 0.0);
 }
 
-TEST_CASE("rocking oracle: overturning is |θ| reaching π/2; past α the block can still return", "[oracle][rocking]") {
+TEST_CASE("rocking oracle: overturning is |θ| reaching π/2, past α the block can still return", "[oracle][rocking]") {
     const double a = kSlender.alpha(), p = kSlender.p();
     const double hill = kSlender.energy(a, 0.0), theta0 = 0.5 * a;
     const double v0 = kSlender.energy(theta0, 0.0);

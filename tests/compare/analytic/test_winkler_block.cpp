@@ -14,7 +14,7 @@ const double kW = 325.0 * 9.81, kH = 0.5 * kW;
 WinklerBlock paper_block() { return {0.5, 0.5, 3e7, 3e7, 0.6, kW}; }
 }  // namespace
 
-TEST_CASE("Winkler block: the paper's stick case lifts its heel; its numbers", "[oracle][winkler]") {
+TEST_CASE("Winkler block: the paper's stick case lifts its heel, its numbers", "[oracle][winkler]") {
     const auto wb = paper_block();
     const double e = wb.eccentricity(kH, 0.25);
     CHECK(e == Approx(0.125).epsilon(1e-12));

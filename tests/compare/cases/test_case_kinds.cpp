@@ -241,7 +241,7 @@ TEST_CASE("a scene whose reference kind has no CaseKind is refused, not run on d
                       Catch::Contains("made_up"));
 }
 
-TEST_CASE("every shipped scene passes its kind's check; a drive a kind's oracle leaves out is refused, naming the key",
+TEST_CASE("every shipped scene passes its kind's check, a drive a kind's oracle leaves out is refused, naming the key",
           "[cases]") {
     namespace fs = std::filesystem;
     int checked = 0;
@@ -361,7 +361,7 @@ TEST_CASE("every shipped scene passes its kind's check; a drive a kind's oracle 
     CHECK_THAT(refusal(loaded), Catch::Contains("[loads]"));
 }
 
-TEST_CASE("arch reference: the shipped arches' stated verdicts are their blocks' limit analysis; without `stands` it "
+TEST_CASE("arch reference: the shipped arches' stated verdicts are their blocks' limit analysis, without `stands` it "
           "is the expectation",
           "[cases]") {
     for (const auto& [name, stands] : {std::pair{"structures/arch_thick", 1.0}, std::pair{"structures/arch_thin", 0.0}}) {
@@ -448,7 +448,7 @@ TEST_CASE("arch reference: a standing arch on dem's overlap contact is judged on
     CHECK(std::string(settlement(kind.analyse(s, fall, dem)).verdict()) == "miss");
 }
 
-TEST_CASE("rocking references: a block turned about the vertical rocks as it does unturned; a lean other than "
+TEST_CASE("rocking references: a block turned about the vertical rocks as it does unturned, a lean other than "
           "theta0 is refused",
           "[cases]") {
     // the shipped rocking_housner block and its axis turned 30° about z (the whole release turned):

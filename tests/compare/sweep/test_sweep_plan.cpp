@@ -86,7 +86,7 @@ TEST_CASE("sweep plans with bad keys or values are refused naming the file, key 
     }
 }
 
-TEST_CASE("a plan expands into runs with stable ids; shards partition them", "[sweep][plan]") {
+TEST_CASE("a plan expands into runs with stable ids, shards partition them", "[sweep][plan]") {
     const auto d = scratch("expand");
     const auto plan = read_sweep_plan(
         write_plan(d, std::string("backends = [\"bullet\", \"ode\"]\nintensities = [0.1, 0.2, 0.3]\n[set]\n"

@@ -52,7 +52,7 @@ TEST_CASE("a staged directory appears only on commit", "[output]") {
     CHECK(names(root / "sub") == std::vector<std::string>{"run"});
 }
 
-TEST_CASE("a commit swaps the whole set; without it the old set stays", "[output]") {
+TEST_CASE("a commit swaps the whole set, without it the old set stays", "[output]") {
     const fs::path root = scratch("replace");
     const fs::path dir = root / "run";
     put(dir / "a.txt", "old a\n");

@@ -73,7 +73,7 @@ TEST_CASE("run jobs: outcomes, the first run's samples, a median of the repeats"
     CHECK(std::string(to_string(Outcome::input_error)) == "error");
 }
 
-TEST_CASE("run jobs write a run's files; an unstable run keeps a partial trajectory", "[run][jobs]") {
+TEST_CASE("run jobs write a run's files, an unstable run keeps a partial trajectory", "[run][jobs]") {
     const Scene scene = flight_scene();
     testing::Faults bad;
     bad.unstable_at_step = 20;

@@ -168,7 +168,7 @@ TEST_CASE("a missing file is rejected", "[scene][reject]") {
     }
 }
 
-TEST_CASE("a backend table of any name is read; its settings are checked", "[scene][reject]") {
+TEST_CASE("a backend table of any name is read, its settings are checked", "[scene][reject]") {
     // which backends exist is the registry's to say (tests/backends/engines/test_registry.cpp)
     const Scene s = parse_scene(with_extra("[backends.physx]\niterations = 10\n"), "bad.toml");
     CHECK(std::get<long long>(s.backend_settings.at("physx").at("iterations").value) == 10);

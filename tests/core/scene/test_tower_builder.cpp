@@ -87,7 +87,7 @@ TEST_CASE("an opening too close to a corner is refused", "[scene][builders]") {
     CHECK_THROWS_WITH(add_tower(s, t), Catch::Contains("opening 0: from 0.12") && Catch::Contains("one brick length"));
 }
 
-TEST_CASE("a house keeps the caller's openings beside its door and windows; holes that meet are refused", "[scene][builders]") {
+TEST_CASE("a house keeps the caller's openings beside its door and windows, holes that meet are refused", "[scene][builders]") {
     HouseSpec h = small_house();
     // wall 1 (1.92 m): the window over [0.72, 1.2]; a second hole [0.24, 0.48] × courses 0-10
     h.walls.openings = {{1, 0.24, 0.48, 0, 10}};

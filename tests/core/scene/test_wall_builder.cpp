@@ -87,7 +87,7 @@ TEST_CASE("a running-bond wall loads, touches without overlap, weighs its closed
     }
 }
 
-TEST_CASE("a wall without base has its first course fixed; shifted courses overhang", "[scene][builders]") {
+TEST_CASE("a wall without base has its first course fixed, shifted courses overhang", "[scene][builders]") {
     WallSpec w;
     w.courses = 3;
     w.bricks = 3;
