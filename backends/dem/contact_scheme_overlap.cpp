@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdint>
 #include <limits>
 
 #include "contact.hpp"
@@ -42,6 +43,11 @@ void ContactSet::evaluate_overlap(std::vector<Block>& blocks, double dt, long be
     std::array<std::array<ClipPolygon, 4>, 1 << kMaxBlend> polys;
     std::array<std::array<OverlapIntegrals, 4>, 1 << kMaxBlend> part;
     std::array<OverlapIntegrals, 1 << kMaxBlend> whole_in;
+    // a rigid face's cells share their corners: each rule's constraints tested once at each grid
+    // corner (bit q: inside, resp. outside, constraint q), as clip() tests them
+    using CornerMasks = std::array<uint32_t, (kMaxSubdivision + 1) * (kMaxSubdivision + 1)>;
+    std::array<CornerMasks, 1 << kMaxBlend> corner_in, corner_out;
+    static_assert(kMaxConstraints <= 32, "a constraint per bit");
     for (long ci = begin; ci < end; ++ci) {
         Candidate& c = candidates_[size_t(ci)];
         ContactTotals& tot = c.totals;
@@ -148,10 +154,25 @@ void ContactSet::evaluate_overlap(std::vector<Block>& blocks, double dt, long be
                         face_cons[size_t(nf++)] = Affine{a, -a.dot(flat[i]) + edge_tol};
                     }
                     if (missed_by(face_cons.data(), face_cons.data() + nf)) continue;
+                    const bool split = hb.deformable != nullptr;
                     for (int a = 0; a < nrules; ++a) {
                         SideRule& r = rules[size_t(a)];
                         r.count = r.side_count;
                         for (int k = 0; k < nf; ++k) r.cons[size_t(r.count++)] = face_cons[size_t(k)];
+                        if (split || !r.live) continue;
+                        uint32_t* in = corner_in[size_t(a)].data();
+                        uint32_t* out = corner_out[size_t(a)].data();
+                        const int corners = (n + 1) * (n + 1);
+                        std::fill(in, in + corners, 0u);
+                        std::fill(out, out + corners, 0u);
+                        for (int q = 0; q < r.count; ++q) {
+                            const Affine& k = r.cons[size_t(q)];
+                            for (int i = 0; i < corners; ++i) {
+                                const double val = k(grid[size_t(i)]);   // as clip() computes it
+                                in[i] |= uint32_t(val >= 0.0) << q;
+                                out[i] |= uint32_t(val < 0.0) << q;
+                            }
+                        }
                     }
                     for (int v = 0; v < n; ++v)
                         for (int u = 0; u < n; ++u) {
@@ -165,7 +186,6 @@ void ContactSet::evaluate_overlap(std::vector<Block>& blocks, double dt, long be
                             // barycentric weights, is the gradient of the energy it books
                             const std::array<int, 4> corner = {v * (n + 1) + u, v * (n + 1) + u + 1, (v + 1) * (n + 1) + u + 1,
                                                                (v + 1) * (n + 1) + u};
-                            const bool split = hb.deformable != nullptr;
                             const int parts = split ? 4 : 1;
                             // natural coordinates on the hitting face of the triangles' corners
                             auto corner_xi = [&](int i) {
@@ -229,7 +249,17 @@ void ContactSet::evaluate_overlap(std::vector<Block>& blocks, double dt, long be
                                     ClipPolygon& poly = polys[size_t(a)][size_t(k)];
                                     piece(k, poly);
                                     if (!r.live) poly.n = 0;
-                                    for (int q = 0; q < r.count && poly.n >= 3; ++q) clip(poly, r.cons[size_t(q)], q);
+                                    // a rigid cell is clipped from the first constraint not met by
+                                    // all its corners (those before leave it as it is), and is
+                                    // empty if all its corners miss that one: clip()'s very result
+                                    int first = 0;
+                                    if (!split && poly.n > 0) {
+                                        uint32_t in = ~0u, out = ~0u;
+                                        for (int i : corner) in &= corner_in[size_t(a)][size_t(i)], out &= corner_out[size_t(a)][size_t(i)];
+                                        while (first < r.count && ((in >> first) & 1u)) ++first;
+                                        if (first < r.count && ((out >> first) & 1u)) poly.n = 0;
+                                    }
+                                    for (int q = first; q < r.count && poly.n >= 3; ++q) clip(poly, r.cons[size_t(q)], q);
                                     if (poly.n < 3) {
                                         poly.n = 0;
                                         continue;
