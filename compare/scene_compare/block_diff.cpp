@@ -1,6 +1,7 @@
 #include "scene_compare/block_diff.hpp"
 
 #include <algorithm>
+#include <numeric>
 
 #include "metrics/signal.hpp"
 #include "output/number_format.hpp"
@@ -60,6 +61,27 @@ BlockPeaks block_peaks(const BlockHistory& h) {
         p.speed = std::max(p.speed, h.speed[i]);
     }
     return p;
+}
+
+std::vector<size_t> blocks_to_show(const std::vector<std::vector<BlockPeaks>>& peaks_of, size_t blocks,
+                                   int max_shown) {
+    std::vector<size_t> all(blocks);
+    std::iota(all.begin(), all.end(), size_t(0));
+    const size_t n = size_t(std::max(0, max_shown));
+    if (blocks <= n) return all;
+    std::vector<BlockPeaks> most(blocks);   // per block, the largest over the variants
+    for (const auto& variant : peaks_of)
+        for (size_t b = 0; b < std::min(blocks, variant.size()); ++b) {
+            most[b].displacement = std::max(most[b].displacement, variant[b].displacement);
+            most[b].angle = std::max(most[b].angle, variant[b].angle);
+        }
+    std::stable_sort(all.begin(), all.end(), [&](size_t a, size_t b) {
+        if (most[a].displacement != most[b].displacement) return most[a].displacement > most[b].displacement;
+        return most[a].angle > most[b].angle;
+    });
+    all.resize(n);
+    std::sort(all.begin(), all.end());
+    return all;
 }
 
 std::string compliance_disagreement(const std::vector<VariantPeak>& peaks) {

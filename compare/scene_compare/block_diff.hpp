@@ -50,6 +50,12 @@ struct BlockPeaks {
 
 BlockPeaks block_peaks(const BlockHistory& h);
 
+/// The free blocks a report draws when it cannot draw all `blocks`: the `max_shown` whose largest
+/// displacement over every variant (`peaks_of[variant][block]`) is largest, then the largest
+/// rotation, ties to the lower index; in index order. Every block when there are no more.
+std::vector<size_t> blocks_to_show(const std::vector<std::vector<BlockPeaks>>& peaks_of, size_t blocks,
+                                   int max_shown);
+
 /// One variant's largest rotation over every free block, for comparing kinds of contact.
 struct VariantPeak {
     std::string name;           ///< the variant, e.g. "dem-rigid"

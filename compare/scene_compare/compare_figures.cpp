@@ -54,12 +54,14 @@ std::string difference_file(const std::string& variant, int free_block) {
 }
 std::string energy_file(const std::string& variant) { return "data/" + variant + "_energy.csv"; }
 
-void write_data(const std::vector<VariantHistories>& variants, int base, int max_blocks, const std::string& dir) {
+void write_data(const std::vector<VariantHistories>& variants, int base, const std::vector<size_t>& shown,
+                const std::string& dir) {
     fs::create_directories(fs::path(dir) / "data");
     for (size_t v = 0; v < variants.size(); ++v) {
         const std::string& name = variants[v].run->variant.name;
         write_text_atomic((fs::path(dir) / energy_file(name)).string(), energy_csv(variants[v].run->samples));
-        for (size_t b = 0; b < variants[v].blocks.size() && int(b) < max_blocks; ++b) {
+        for (size_t b : shown) {
+            if (b >= variants[v].blocks.size()) continue;
             write_text_atomic((fs::path(dir) / history_file(name, int(b))).string(), history_csv(variants[v].blocks[b]));
             if (base >= 0 && int(v) != base && b < variants[size_t(base)].blocks.size())
                 write_text_atomic((fs::path(dir) / difference_file(name, int(b))).string(),
@@ -97,7 +99,7 @@ std::string panel(const std::vector<VariantHistories>& variants, const std::vect
 }  // namespace
 
 std::vector<std::string> draw_figures(const std::vector<VariantHistories>& variants, int base,
-                                      const std::vector<std::string>& block_names, int max_blocks,
+                                      const std::vector<std::string>& block_names, const std::vector<size_t>& shown,
                                       const std::string& dir, std::string& note) {
     std::vector<std::string> out;
     if (variants.empty() || !report::gnuplot_available(note)) return out;
@@ -105,8 +107,9 @@ std::vector<std::string> draw_figures(const std::vector<VariantHistories>& varia
     fs::create_directories(fig);
     std::vector<int> all;
     for (size_t v = 0; v < variants.size(); ++v) all.push_back(int(v));
-    const int nblocks = std::min<int>(max_blocks, int(block_names.size()));
-    for (int b = 0; b < nblocks; ++b) {
+    for (size_t shown_block : shown) {
+        if (shown_block >= block_names.size()) continue;
+        const int b = int(shown_block);
         const std::string stem = "block" + std::to_string(b + 1);
         std::vector<std::string> files;
         std::vector<int> which;

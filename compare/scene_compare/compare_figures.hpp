@@ -32,15 +32,16 @@ std::string history_file(const std::string& variant, int free_block);
 std::string difference_file(const std::string& variant, int free_block);
 std::string energy_file(const std::string& variant);
 
-/// write the data files under DIR/data for the first `max_blocks` free blocks (the runs'
+/// write the data files under DIR/data for the free blocks `shown` (indices; the runs'
 /// trajectory.csv hold every block); `base` indexes the baseline in `variants` (-1 = none)
-void write_data(const std::vector<VariantHistories>& variants, int base, int max_blocks, const std::string& dir);
+void write_data(const std::vector<VariantHistories>& variants, int base, const std::vector<size_t>& shown,
+                const std::string& dir);
 
 /// draw DIR/figures/block<k>.png (histories), block<k>_diff.png (differences, when there is a
-/// baseline) for the first `max_blocks` free blocks and energy.png; returns the images written
+/// baseline) for the free blocks `shown` (indices) and energy.png; returns the images written
 /// (relative to DIR) by name: "block<k>", "block<k>_diff", "energy"; failures are added to `note`
 std::vector<std::string> draw_figures(const std::vector<VariantHistories>& variants, int base,
-                                      const std::vector<std::string>& block_names, int max_blocks,
+                                      const std::vector<std::string>& block_names, const std::vector<size_t>& shown,
                                       const std::string& dir, std::string& note);
 
 }  // namespace cairn::scene_compare

@@ -189,8 +189,15 @@ report::Document write_compare_report(const CaseResult& result, const CompareCon
         d.bullets(warned);
     }
 
-    write_data(variants, base_index, ctx.max_block_figures, dir);
-    const auto images = draw_figures(variants, base_index, block_names, ctx.max_block_figures, dir, figure_note);
+    std::vector<std::vector<BlockPeaks>> peaks_of(variants.size());   // [variant][free block]
+    for (size_t v = 0; v < variants.size(); ++v)
+        for (const auto& h : variants[v].blocks) peaks_of[v].push_back(block_peaks(h));
+    // the blocks with figures and rows in the document: those that moved most when not all fit
+    const std::vector<size_t> shown = blocks_to_show(peaks_of, blocks.size(), ctx.max_block_figures);
+    const bool all_shown = shown.size() == blocks.size();
+    auto is_shown = [&](size_t b) { return std::binary_search(shown.begin(), shown.end(), b); };
+    write_data(variants, base_index, shown, dir);
+    const auto images = draw_figures(variants, base_index, block_names, shown, dir, figure_note);
     auto has = [&](const std::string& p) { return std::find(images.begin(), images.end(), p) != images.end(); };
 
     // verdicts against the analytic reference
@@ -234,9 +241,6 @@ report::Document write_compare_report(const CaseResult& result, const CompareCon
         "they stay within that.",
         "Each variant keeps one colour in every figure.",
     };
-    std::vector<std::vector<BlockPeaks>> peaks_of(variants.size());   // [variant][free block]
-    for (size_t v = 0; v < variants.size(); ++v)
-        for (const auto& h : variants[v].blocks) peaks_of[v].push_back(block_peaks(h));
     const std::string compliance = compliance_text(variants, peaks_of, scene);
     if (!compliance.empty()) how.push_back(compliance);
     d.bullets(how);
@@ -246,52 +250,49 @@ report::Document write_compare_report(const CaseResult& result, const CompareCon
                         "speed RMS (m/s)", "compared until (s)"},
                        {}};
     report::Table peaks{{"block", "variant", "largest displacement (m)", "largest rotation (rad)", "largest speed (m/s)"}, {}};
+    report::Table diff_shown{diff.header, {}}, peaks_shown{peaks.header, {}};   // the document's rows
     for (size_t b = 0; b < blocks.size(); ++b) {
         th.position = 0.01 * blocks[b].size;
         for (size_t v = 0; v < variants.size(); ++v) {
             const BlockPeaks& p = peaks_of[v][b];
             peaks.rows.push_back({blocks[b].name, variants[v].run->variant.name, number_text(p.displacement, 4),
                                   number_text(p.angle, 4), number_text(p.speed, 4)});
+            if (is_shown(b)) peaks_shown.rows.push_back(peaks.rows.back());
             if (base_index < 0 || int(v) == base_index) continue;
             const auto x = block_diff(variants[v].blocks[b], variants[size_t(base_index)].blocks[b], th);
             diff.rows.push_back({blocks[b].name, variants[v].run->variant.name, number_text(x.position_rms, 4),
                                  or_never(x.position_diverged), number_text(x.position_peak, 4),
                                  number_text(x.angle_rms, 4), or_never(x.angle_diverged), number_text(x.angle_peak, 4),
                                  number_text(x.speed_rms, 4), number_text(x.compared_until, 4)});
+            if (is_shown(b)) diff_shown.rows.push_back(diff.rows.back());
         }
     }
     write_text_atomic((fs::path(dir) / "differences.csv").string(), table_csv(diff));
     write_text_atomic((fs::path(dir) / "peaks.csv").string(), table_csv(peaks));
     // the document shows the blocks that have figures; the CSVs hold every block
-    const size_t shown_rows = size_t(std::max(0, ctx.max_block_figures));
-    const std::string more = blocks.size() > shown_rows ? " The first " + std::to_string(shown_rows) + " of " +
-                                                              std::to_string(blocks.size()) + " free blocks are shown."
-                                                        : std::string();
-    auto first_rows = [&](report::Table t, size_t per_block) {
-        if (t.rows.size() > shown_rows * per_block) t.rows.resize(shown_rows * per_block);
-        return t;
-    };
+    const std::string which = std::to_string(shown.size()) + " of the " + std::to_string(blocks.size()) +
+                              " free blocks that moved most (largest displacement over every variant, then rotation)";
+    const std::string more = all_shown ? std::string() : " Shown: the " + which + ".";
     if (base.run) {
         d.heading(2, "Differences from " + base.run->variant.name);
         d.paragraph("Per free block and variant (every block in differences.csv)." + more);
-        d.table(first_rows(diff, variants.size() - 1));
+        d.table(diff_shown);
     }
     d.heading(2, "Peak values");
     d.paragraph("Per free block and variant: the largest distance from the position at t = 0, rotation angle and "
                 "speed (every block in peaks.csv)." + more);
-    d.table(first_rows(peaks, variants.size()));
+    d.table(peaks_shown);
 
     // per block figures
     d.heading(2, "Blocks");
     std::string replay_note;
     if (report::write_case_replay(result, dir, "replay.html", replay_note).empty()) d.paragraph(replay_note + ".");
     else d.page("replay.html", "3-D replay of every variant side by side (replay.html)");
-    if (!images.empty() && int(blocks.size()) > ctx.max_block_figures)
-        d.paragraph("Figures for the first " + std::to_string(ctx.max_block_figures) + " of " +
-                    std::to_string(blocks.size()) + " free blocks (and their histories in data/); every block is in "
-                    "the runs' trajectory.csv.");
+    if (!images.empty() && !all_shown)
+        d.paragraph("Figures, and histories in data/, for the " + which + "; every block is in the runs' "
+                    "trajectory.csv.");
     if (images.empty()) d.paragraph("No figures: " + (figure_note.empty() ? std::string("nothing to draw") : figure_note));
-    for (size_t b = 0; b < blocks.size() && int(b) < ctx.max_block_figures; ++b) {
+    for (size_t b : shown) {
         const std::string stem = "figures/block" + std::to_string(b + 1);
         if (!has(stem + ".png")) continue;
         d.heading(3, blocks[b].name);
@@ -347,8 +348,8 @@ report::Document write_compare_report(const CaseResult& result, const CompareCon
 
     d.heading(2, "Files");
     d.bullets({"differences.csv, peaks.csv, energy.csv: the tables above.",
-               "data/<variant>_block<k>.csv: t (s), x, y, z (m), rotation angle (rad), speed (m/s) of free block k (the "
-               "first " + std::to_string(ctx.max_block_figures) + ").",
+               "data/<variant>_block<k>.csv: t (s), x, y, z (m), rotation angle (rad), speed (m/s) of free block k "
+               "(k counts the free blocks in the order of peaks.csv" + (all_shown ? std::string("") : "; the blocks shown only") + ").",
                "data/<variant>_block<k>_difference.csv: the same block's difference to the baseline.",
                "data/<variant>_energy.csv: the energy ledger (J) and contact count over time.",
                "runs/<scene>/<variant>/: each run's trajectory.csv and run.json, as cairn run writes them."});

@@ -91,3 +91,20 @@ TEST_CASE("compliance disagreement names the dem variants far from the rigid eng
     CHECK_FALSE(scene_compare::compliance_disagreement({{"dem-rigid", true, false, 0.17}, {"ode-rigid", false, true, 0.113}}).empty());
     CHECK(scene_compare::compliance_disagreement({{"dem-rigid", true, false, 3.1}, {"ode-matched", false, false, 0.1}}).empty());
 }
+
+TEST_CASE("a report that cannot draw every block draws those that moved most, in the scene's order",
+          "[scene_compare]") {
+    // five blocks, two variants: block 3 moved most in one variant only, 0 and 4 tie on displacement
+    // and 4 turned more, 1 and 2 hardly moved
+    const std::vector<std::vector<BlockPeaks>> peaks{
+        {{0.5, 0.1, 1.0}, {0.001, 0.0, 0.0}, {0.002, 0.0, 0.0}, {0.01, 0.0, 0.0}, {0.5, 0.3, 1.0}},
+        {{0.4, 0.1, 1.0}, {0.001, 0.0, 0.0}, {0.003, 0.0, 0.0}, {2.0, 1.0, 3.0}, {0.2, 0.1, 1.0}}};
+    CHECK(blocks_to_show(peaks, 5, 2) == std::vector<size_t>{3, 4});
+    CHECK(blocks_to_show(peaks, 5, 3) == std::vector<size_t>{0, 3, 4});
+    CHECK(blocks_to_show(peaks, 5, 4) == std::vector<size_t>{0, 2, 3, 4});
+    // all fit: every block, in order; none asked for: none
+    CHECK(blocks_to_show(peaks, 5, 5) == std::vector<size_t>{0, 1, 2, 3, 4});
+    CHECK(blocks_to_show(peaks, 5, 0).empty());
+    // a variant that failed before its first sample has no peaks: the others decide
+    CHECK(blocks_to_show({{}, peaks[1]}, 5, 1) == std::vector<size_t>{3});
+}
