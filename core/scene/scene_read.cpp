@@ -100,6 +100,8 @@ ContactLaw read_contact(const TableReader& root) {
     Item ratio = c.get("damping_ratio"), time = c.get("damping_time");
     if (ratio && time)
         time.fail("give damping_ratio or damping_time, not both");
+    // a damping of 0 is no damping: every reader of the law (which engine modes a reference
+    // judges, what the report says an engine cannot represent) then sees one undamped contact
     if (ratio) {
         law.damping_rule = ContactDampingRule::ratio;
         law.damping = ratio.number();
@@ -108,6 +110,7 @@ ContactLaw read_contact(const TableReader& root) {
         law.damping_rule = ContactDampingRule::time;
         law.damping = non_negative(time);
     }
+    if (law.damping == 0.0) law.damping_rule = ContactDampingRule::none;
     if (Item it = c.get("restitution")) {
         law.restitution = it.number();
         it.check(law.restitution >= 0.0 && law.restitution <= 1.0, "must be in [0, 1]");

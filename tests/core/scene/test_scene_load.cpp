@@ -201,6 +201,22 @@ TEST_CASE("a pivot folds into the position: the block turns about that world poi
     CHECK((a.position - Vec3(0.5, 0, 0)).norm() == Approx(std::hypot(0.5, 0.5)).epsilon(1e-12));
 }
 
+TEST_CASE("a contact damping of 0 is no contact damping, by ratio or by time", "[scene]") {
+    // a reference judges rigid-contact engines only on undamped scenes (Housner's impact), and the
+    // report names damping an engine cannot represent: both read the rule, which must say none
+    for (const std::string key : {"damping_ratio = 0.0", "damping_time = 0", "damping_ratio = 0.0\n# same"}) {
+        const Scene s = parse_scene(test::with_line(10, "friction = 0.6\n" + key), "z.toml");
+        CHECK(s.contact.damping_rule == ContactDampingRule::none);
+        CHECK(s.contact.damping == 0.0);
+    }
+    const Scene damped = parse_scene(test::with_line(10, "friction = 0.6\ndamping_ratio = 1e-9"), "z.toml");
+    CHECK(damped.contact.damping_rule == ContactDampingRule::ratio);
+    // an override to 0 as well
+    const Scene set = parse_scene(test::with_line(10, "friction = 0.6\ndamping_ratio = 0.05"), "z.toml",
+                                  {Override{"contact.damping_ratio", "0"}});
+    CHECK(set.contact.damping_rule == ContactDampingRule::none);
+}
+
 TEST_CASE("a box load without a point acts at the centre of mass", "[scene]") {
     Scene s = parse_scene(test::with_extra("[loads.h]\nblock = \"A\"\nforce = [1, 0, 0]\n"
                                            "point = \"centre\"\n"),
