@@ -113,7 +113,7 @@ const std::vector<Param>& common_params() {
         {"damping-ratio", "0.1", Unit::ratio, "contact damping ratio ζ"},
         {"scheme", "overlap", Unit::choice,
          "contact scheme of the in-house engine: paper (hitting points) or overlap (integrated over each face)"},
-        {"subdivision", "2", Unit::count, "overlap scheme: sub-contacts per edge of a face, 1 to 16 (1 resists no twist)"},
+        {"subdivision", "2", Unit::count, "overlap scheme: sub-contacts per edge of a face, 1 to 16 (1: one sub-contact a face, its twist held by a torsion spring)"},
         {"duration", "1s", Unit::time, "simulated time"},
     };
     return params;

@@ -7,6 +7,7 @@
 /// - paper: the paper's node-to-face rule on a grid of hitting points, each with a penalty normal
 ///   force and a shear spring from a stick anchor in the target face's natural coordinates.
 
+#include <array>
 #include <limits>
 #include <utility>
 #include <vector>
@@ -40,6 +41,19 @@ struct Anchor {
     PointTrack track;           ///< depth and normal spring of the last evaluation (kept on reset)
 };
 
+/// Torsion state of one sub-contact of the overlap scheme: the clipped area taken as a disc of its
+/// size, whose elastic-then-Coulomb shear resists the relative spin about the normal (docs/dem.md,
+/// "Twist of a sub-contact"). Its moment acts as a pair of opposite tangential forces.
+struct SubTwist {
+    double angle = 0.0;         ///< elastic twist offset, rad
+    double energy = 0.0;        ///< torsion-spring energy at the last evaluation, J
+    double area = 0.0;          ///< contact area it was sized with at the last evaluation, m²
+    double moment = 0.0;        ///< moment about the normal on the hitting block (spring and dashpot), N·m
+    double damper = 0.0;        ///< its dashpot part, N·m
+    Vec3 dir = Vec3::Zero();    ///< the pair's force per unit moment (along the second tangent), 1/m
+    std::array<NodeWeights, 2> hit, target;  ///< the pair's two points on each block
+};
+
 /// Shear state of one sub-contact of the overlap scheme: the elastic offset of the stick spring,
 /// built up from the relative tangential motion at the sub-contact's pressure centre.
 struct SubAnchor {
@@ -59,6 +73,7 @@ struct SubAnchor {
     bool edged = false;         ///< edge forces on the target's edges acted at the last evaluation
     Vec3 fs = Vec3::Zero();     ///< shear force (spring and dashpot) on the hitting block at the last evaluation, N
     NodeWeights shear_hit, shear_target;  ///< where it acted
+    SubTwist twist;             ///< its torsion spring about the normal
 };
 
 /// The force of one sub-contact, or the edge force of one of its edges on the target's edge,
@@ -72,6 +87,7 @@ struct SubForce {
     /// that side o; an edge force, its own direction): splits it in the output
     Vec3 normal = Vec3::UnitZ();
     NodeWeights hit_n, target_n;///< where its normal part acts (the pressure centre; docs/dem.md "scheme = overlap")
+    bool twist = false;         ///< one of the two forces of a sub-contact's twisting moment (not a contact point of its own)
     /// add it to the node forces of the hitting block `hb` and the target `tb`: the normal part at
     /// hit_n/target_n, the rest at hit/target (one order of sums: the same bits wherever it is spread)
     void spread(Block& hb, Block& tb) const {

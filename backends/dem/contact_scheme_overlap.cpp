@@ -11,6 +11,7 @@
 #include "contact_overlap_beyond.hpp"
 #include "contact_overlap_edge.hpp"
 #include "contact_reach.hpp"
+#include "contact_twist.hpp"
 
 namespace cairn::dem {
 
@@ -63,6 +64,7 @@ void ContactSet::evaluate_overlap(std::vector<Block>& blocks, double dt, long be
             for (int j = 0; j <= n; ++j)
                 for (int i = 0; i <= n; ++i) grid[j * (n + 1) + i] = quad_point(hq, Vec2(-1.0 + 2.0 * i / n, -1.0 + 2.0 * j / n));
             const auto [cn_area, ct_area] = dashpot_per_area(law_, hb, tb, hit_side);
+            const TwistLaw twist_law{law_.ks, law_.friction, ct_area, slip_};
             bool ready = false;   // the box: laid at the first side not missed
             for (int s = 0; s < 6; ++s) {
                 if (!faces[size_t(s)]) continue;
@@ -463,11 +465,22 @@ void ContactSet::evaluate_overlap(std::vector<Block>& blocks, double dt, long be
                                     tot.dissipated -= 0.5 * (anchor->fds.dot(v_old) + fds.dot(vt_new)) * dt;
                                 }
                                 tot.stored += anchor->energy;
+                                // its torsion spring (a disc of its area) resists the spin about n
+                                TwistInput ti;
+                                ti.area = in.area;
+                                ti.normal_force = fn;
+                                ti.shear_force = fs.norm();
+                                ti.centroid = xc;
+                                ti.normal = nt;
+                                ti.edge = hq[1] - hq[0];
+                                ti.lay = lay;
+                                update_twist(anchor->twist, ti, twist_law, hb, c.hit_face, tb, tf, dt, tot);
                             } else {
                                 // no normal force: the anchor is given up (re-laid at the next touch)
                                 tot.dissipated += std::max(0.0, anchor->energy);
                                 anchor->energy = -1.0;
                                 anchor->area = 0.0;
+                                release_twist(anchor->twist, hb, tb, dt, tot);
                             }
                             anchor->fds = fds;
                             anchor->fs = fs;
@@ -477,6 +490,7 @@ void ContactSet::evaluate_overlap(std::vector<Block>& blocks, double dt, long be
                             const SubForce sub{wh, wt, force, nt, wh_n, wt_n};
                             if (keep_forces) c.sub_forces.push_back(sub);
                             else sub.spread(hb, tb);
+                            add_twist_forces(anchor->twist, nt, keep_forces ? &c.sub_forces : nullptr, hb, tb);
                             // where the polygon ends on a constraint fixed to the target (a target
                             // face's edge, another side's plane) with depth, U changes as the
                             // face moves over it: the boundary term of the gradient, on both blocks
@@ -582,6 +596,8 @@ void ContactSet::evaluate_overlap(std::vector<Block>& blocks, double dt, long be
             tot.dissipated += std::max(0.0, a.energy);
             // its last shear force did work over the step too (the start's half kick)
             tot.dissipated -= 0.5 * dt * a.fs.dot(a.shear_hit.velocity(hb) - a.shear_target.velocity(tb));
+            SubTwist twist = a.twist;
+            release_twist(twist, hb, tb, dt, tot);
             if (a.fd == 0.0 && !(a.fel > 0.0)) continue;
             // it left in this step, its force clipped to zero at the last evaluation (the
             // dashpot cancelled the spring): nothing pushed, and the dashpot took the spring's

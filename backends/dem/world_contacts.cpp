@@ -26,6 +26,7 @@ std::vector<ContactPoint> World::contact_points() const {
                 quad_normal(tb.face_quad(p.target_face), p.target_xi), p.force);
         // overlap scheme: each sub-contact at its point of action on the hitting block
         for (const auto& p : c.sub_forces) {
+            if (p.twist) continue;   // a couple about its sub-contact's normal: no force of its own
             Vec3 position = Vec3::Zero();
             for (int i = 0; i < p.hit.count; ++i) position += p.hit.w[i] * hb.x[p.hit.node[i]];
             add(position, p.normal, p.force);
