@@ -51,7 +51,9 @@ struct SubTwist {
     double moment = 0.0;        ///< moment about the normal on the hitting block (spring and dashpot), N·m
     double damper = 0.0;        ///< its dashpot part, N·m
     Vec3 dir = Vec3::Zero();    ///< the pair's force per unit moment (along the second tangent), 1/m
-    std::array<NodeWeights, 2> hit, target;  ///< the pair's two points on each block
+    /// on each block, the weights of the pair's first point less those of its second (one set of
+    /// nodes: the face's element): the force dir·M spread by them is the couple
+    NodeWeights hit, target;
 };
 
 /// Shear state of one sub-contact of the overlap scheme: the elastic offset of the stick spring,
@@ -87,10 +89,15 @@ struct SubForce {
     /// that side o; an edge force, its own direction): splits it in the output
     Vec3 normal = Vec3::UnitZ();
     NodeWeights hit_n, target_n;///< where its normal part acts (the pressure centre; docs/dem.md "scheme = overlap")
-    bool twist = false;         ///< one of the two forces of a sub-contact's twisting moment (not a contact point of its own)
+    bool twist = false;         ///< a sub-contact's twisting couple, spread by weight differences (not a contact point)
     /// add it to the node forces of the hitting block `hb` and the target `tb`: the normal part at
     /// hit_n/target_n, the rest at hit/target (one order of sums: the same bits wherever it is spread)
     void spread(Block& hb, Block& tb) const {
+        if (twist) {
+            hit.add(hb, force);
+            target.add(tb, -force);
+            return;
+        }
         const Vec3 fn = force.dot(normal) * normal;
         hit_n.add(hb, fn);
         target_n.add(tb, -fn);

@@ -590,7 +590,8 @@ void ContactSet::evaluate_overlap(std::vector<Block>& blocks, double dt, long be
         for (size_t i = 0; i < c.subs.size(); ++i) {
             const SubAnchor& a = c.subs[i];
             if (a.seen) {
-                c.subs[kept++] = a;
+                if (kept != i) c.subs[kept] = a;
+                ++kept;
                 continue;
             }
             tot.dissipated += std::max(0.0, a.energy);

@@ -15,10 +15,19 @@ double disc_polar_moment(double area) { return area * area / (2.0 * kPi); }
 double disc_friction_radius(double area) { return (2.0 / 3.0) * std::sqrt(area / kPi); }
 
 double twist_spin(const SubTwist& tw, const Block& hb, const Block& tb) {
-    const Vec3 vp = tw.hit[0].velocity(hb) - tw.target[0].velocity(tb);
-    const Vec3 vm = tw.hit[1].velocity(hb) - tw.target[1].velocity(tb);
-    return (vp - vm).dot(tw.dir);
+    return (tw.hit.velocity(hb) - tw.target.velocity(tb)).dot(tw.dir);
 }
+
+namespace {
+// the weights of x + a less those of x − a on block b (face `face`): both points lie on the same
+// element of the face, so the two share their nodes
+NodeWeights weight_difference(const Block& b, int face, const Vec3& x, const Vec3& a) {
+    NodeWeights plus = node_weights(b, face, x + a);
+    const NodeWeights minus = node_weights(b, face, x - a);
+    for (int i = 0; i < plus.count; ++i) plus.w[size_t(i)] -= minus.w[size_t(i)];
+    return plus;
+}
+}  // namespace
 
 void update_twist(SubTwist& tw, const TwistInput& in, const TwistLaw& law, const Block& hb, int hit_face,
                   const Block& tb, int target_face, double dt, ContactTotals& tot) {
@@ -33,11 +42,8 @@ void update_twist(SubTwist& tw, const TwistInput& in, const TwistLaw& law, const
     const double moment_before = in.lay ? 0.0 : tw.moment;
     const double damper_before = in.lay ? 0.0 : tw.damper;
     const double energy_before = in.lay ? 0.0 : tw.energy;
-    for (int k = 0; k < 2; ++k) {
-        const Vec3 p = in.centroid + (k == 0 ? rho : -rho) * t1;
-        tw.hit[size_t(k)] = node_weights(hb, hit_face, p);
-        tw.target[size_t(k)] = node_weights(tb, target_face, p);
-    }
+    tw.hit = weight_difference(hb, hit_face, in.centroid, rho * t1);
+    tw.target = weight_difference(tb, target_face, in.centroid, rho * t1);
     tw.dir = t2 / (2.0 * rho);
     const double spin_new = twist_spin(tw, hb, tb);
     if (in.lay) tw.angle = 0.0;
@@ -94,14 +100,11 @@ void release_twist(SubTwist& tw, const Block& hb, const Block& tb, double dt, Co
 void add_twist_forces(const SubTwist& tw, const Vec3& normal, std::vector<SubForce>* keep, Block& hb, Block& tb) {
     if (tw.moment == 0.0) return;
     const Vec3 f = tw.moment * tw.dir;
-    const SubForce plus{tw.hit[0], tw.target[0], f, normal, tw.hit[0], tw.target[0], true};
-    const SubForce minus{tw.hit[1], tw.target[1], -f, normal, tw.hit[1], tw.target[1], true};
     if (keep) {
-        keep->push_back(plus);
-        keep->push_back(minus);
+        keep->push_back(SubForce{tw.hit, tw.target, f, normal, tw.hit, tw.target, true});
     } else {
-        plus.spread(hb, tb);
-        minus.spread(hb, tb);
+        tw.hit.add(hb, f);
+        tw.target.add(tb, -f);
     }
 }
 

@@ -47,8 +47,8 @@ double twist_spin(const SubTwist& tw, const Block& hb, const Block& tb);
 /// work its last moment did over the step (the start's half kick); the state is cleared
 void release_twist(SubTwist& tw, const Block& hb, const Block& tb, double dt, ContactTotals& tot);
 
-/// the two opposite forces of the twist's moment (on the hitting block; the target takes the
-/// opposite), none where the moment is zero
+/// the twist's moment as two opposite forces ±dir·M at the pair's points (on the hitting block; the
+/// target takes the opposite), spread at once or kept in `keep`; nothing where the moment is zero
 void add_twist_forces(const SubTwist& tw, const Vec3& normal, std::vector<SubForce>* keep, Block& hb, Block& tb);
 
 }  // namespace cairn::dem
