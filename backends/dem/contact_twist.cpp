@@ -35,6 +35,8 @@ void update_twist(SubTwist& tw, const TwistInput& in, const TwistLaw& law, const
     // unit moment 1/(2ρ); the spin is the pair's relative velocity along t2 over 2ρ (on rigid
     // blocks the relative angular velocity about n, wherever the points lie)
     Vec3 t1 = in.edge - in.edge.dot(in.normal) * in.normal;
+    if (!(t1.squaredNorm() > 1e-12 * in.edge.squaredNorm()))   // an edge along the normal: any tangent
+        t1 = in.normal.cross(std::abs(in.normal.x()) < 0.9 ? Vec3::UnitX() : Vec3::UnitY());
     t1.normalize();
     const Vec3 t2 = in.normal.cross(t1);
     const double rho = 0.25 * std::sqrt(in.area);
