@@ -7,7 +7,6 @@
 /// - paper: the paper's node-to-face rule on a grid of hitting points, each with a penalty normal
 ///   force and a shear spring from a stick anchor in the target face's natural coordinates.
 
-#include <array>
 #include <limits>
 #include <utility>
 #include <vector>

@@ -27,6 +27,7 @@ int face_along(const Block& b, const Vec3& n) {
 struct Pair {
     Scene scene = test::stone_scene(0.5);
     std::vector<Block> blocks;
+    int hit = -1, target = -1;   ///< A's bottom face, B's top face
     explicit Pair(double spin) {
         test::add_box(scene, "A", Vec3(1, 1, 1), Vec3(0.1, 0.2, 0.5), false);
         test::add_box(scene, "B", Vec3(3, 3, 0.5), Vec3(0, 0, -0.25), true);
@@ -34,8 +35,21 @@ struct Pair {
         const Vec3 c(0.1, 0.2, 0.5);
         for (size_t i = 0; i < blocks[0].x.size(); ++i)
             blocks[0].v[i] = Vec3(1, 0, 0) + Vec3(0, 0, spin).cross(blocks[0].x[i] - c);
+        hit = face_along(blocks[0], -Vec3::UnitZ());
+        target = face_along(blocks[1], Vec3::UnitZ());
     }
 };
+
+// a sub-contact of A's bottom on B's top touching for the first time
+TwistInput first_touch(double area, double normal_force, const Vec3& centroid) {
+    TwistInput in;
+    in.area = area;
+    in.normal_force = normal_force;
+    in.centroid = centroid;
+    in.normal = Vec3::UnitZ();
+    in.lay = true;
+    return in;
+}
 
 }  // namespace
 
@@ -51,21 +65,15 @@ TEST_CASE("twist: the spring measures the relative spin, and its couple is a pur
     Pair p(2.0);
     Block& a = p.blocks[0];
     Block& b = p.blocks[1];
-    const int hit = face_along(a, -Vec3::UnitZ()), target = face_along(b, Vec3::UnitZ());
-    REQUIRE(hit >= 0);
-    REQUIRE(target >= 0);
-    TwistInput in;
-    in.area = 0.04;
-    in.normal_force = 1e6;
-    in.centroid = Vec3(0.3, 0.1, 0.0);   // a sub-cell of A's bottom, off the spin axis
-    in.normal = Vec3::UnitZ();
+    REQUIRE(p.hit >= 0);
+    REQUIRE(p.target >= 0);
+    TwistInput in = first_touch(0.04, 1e6, Vec3(0.3, 0.1, 0.0));   // a sub-cell off the spin axis
     in.edge = Vec3(1, 1, 0);
-    in.lay = true;
     const TwistLaw law{1e9, 0.5, 0.0, true};
     SubTwist tw;
     ContactTotals tot;
     const double dt = 1e-4;
-    update_twist(tw, in, law, a, hit, b, target, dt, tot);
+    update_twist(tw, in, law, a, p.hit, b, p.target, dt, tot);
     // the translation along x does not enter: the spin is A's angular velocity about z
     CHECK(twist_spin(tw, a, b) == Approx(2.0).epsilon(1e-12));
     const double kt = 1e9 * 0.04 * 0.04 / (2 * kPi);
@@ -88,19 +96,13 @@ TEST_CASE("twist: past the friction cap the spring slips and books the work it t
     Pair p(50.0);
     Block& a = p.blocks[0];
     Block& b = p.blocks[1];
-    const int hit = face_along(a, -Vec3::UnitZ()), target = face_along(b, Vec3::UnitZ());
-    TwistInput in;
-    in.area = 0.04;
-    in.normal_force = 100.0;
-    in.centroid = Vec3(0.1, 0.2, 0.0);
-    in.normal = Vec3::UnitZ();
+    TwistInput in = first_touch(0.04, 100.0, Vec3(0.1, 0.2, 0.0));
     in.shear_force = 30.0;   // 0.6 of μ·F_n: the moment keeps √(1 − 0.36) = 0.8 of its cap
-    in.lay = true;
     const TwistLaw law{1e9, 0.5, 0.0, true};
     SubTwist tw;
     ContactTotals tot;
     const double dt = 1e-4;
-    update_twist(tw, in, law, a, hit, b, target, dt, tot);
+    update_twist(tw, in, law, a, p.hit, b, p.target, dt, tot);
     const double cap = 0.5 * 100.0 * disc_friction_radius(0.04) * 0.8;
     CHECK(tw.moment == Approx(-cap).epsilon(1e-12));
     // the trapezoid's work of the moment against the spin, less what the spring kept
