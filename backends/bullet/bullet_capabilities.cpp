@@ -24,6 +24,9 @@ std::vector<FeatureSupport> bullet_capabilities() {
         {Feature::stiffness_damping, S::none, "beta ignored (rigid bodies)"},
         {Feature::deformable_blocks, S::none, "refused: run with --model rigid"},
         {Feature::general_hexahedra, S::exact, "btConvexHullShape with polyhedral contact clipping"},
+        {Feature::held_at_rest, S::approximate,
+         "an iterative solver (`iterations`, 50): a stack or arch held by friction creeps; a 31-voussoir arch, R = 6 m, "
+         "t/R = 0.15: crown 1.9 mm/s at 50 iterations, 0.35 at 200, 0.10 at 1000"},
     };
 }
 

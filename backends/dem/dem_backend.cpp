@@ -281,6 +281,9 @@ BackendInfo dem_backend_info() {
         {Feature::stiffness_damping, Support::exact, "deformable blocks: strain-rate (Kelvin-Voigt) β·C:Ė; rigid blocks have none"},
         {Feature::deformable_blocks, Support::exact, "hex8 St. Venant-Kirchhoff, total Lagrangian; lumped, consistent, barycentre or corrected mass"},
         {Feature::general_hexahedra, Support::exact, "planar-faced convex hexahedra"},
+        {Feature::held_at_rest, Support::exact,
+         "penalty springs and stick anchors reach a static state and keep it (settled start): a 31-voussoir arch, "
+         "R = 6 m, t/R = 0.15, kn 1e10, moves its crown by 2e-8 m in 1.5 s"},
     };
     info.contact = ContactModel::penalty;
     info.solver = "penalty springs per hitting point (corners and a virtual grid), elastic-Coulomb shear";

@@ -28,6 +28,9 @@ std::vector<FeatureSupport> mujoco_capabilities() {
         {Feature::general_hexahedra, S::exact,
          "mesh geoms; box-mesh and mesh-mesh pairs through cairn's face-clipping collider (up to 4 points; "
          "MuJoCo 2.2.2's own gives one per pair)"},
+        {Feature::held_at_rest, S::approximate,
+         "soft constraints without a position term in friction (`impratio`): a 31-voussoir arch, R = 6 m, t/R = 0.15, "
+         "sinks 60 µm at its crown and creeps on at 9 µm/s"},
     };
 }
 

@@ -26,6 +26,9 @@ std::vector<FeatureSupport> siconos_capabilities() {
         {Feature::deformable_blocks, S::none, "refused: run with --model rigid"},
         {Feature::general_hexahedra, S::exact,
          "cairn's face-clipping collider (up to 4 points per pair) handed to Siconos as point contacts"},
+        {Feature::held_at_rest, S::exact,
+         "the friction-contact problem solved to its `tolerance` each step: a 25-voussoir arch at R = 5 m stops settling "
+         "(0.3 µm in the second half of 4 s)"},
     };
 }
 

@@ -114,13 +114,17 @@ std::string compliance_text(const std::vector<VariantHistories>& variants,
 }
 
 /// false for a capability row the scene does not use (a damping it does not set, hexahedra it does
-/// not have, deformable blocks the reference engines are never asked for); rows not named here apply
+/// not have, deformable blocks the reference engines are never asked for, a structure held at rest
+/// where one block moves alone); rows not named here apply
 bool applies(Feature feature, const Scene& scene, bool engine) {
     if (feature == Feature::mass_damping) return scene.damping.alpha != 0.0;
     if (feature == Feature::stiffness_damping) return scene.damping.beta != 0.0;
     if (feature == Feature::normal_damping) return scene.contact.damping_rule != ContactDampingRule::none;
     if (feature == Feature::twist_friction) return scene.contact.friction > 0.0;
     if (feature == Feature::deformable_blocks) return !engine;
+    // a structure: blocks that rest on each other, not one block on fixed ones
+    if (feature == Feature::held_at_rest)
+        return std::count_if(scene.blocks.begin(), scene.blocks.end(), [](const BlockDef& b) { return !b.fixed; }) > 1;
     if (feature == Feature::general_hexahedra)
         return std::any_of(scene.blocks.begin(), scene.blocks.end(), [](const BlockDef& b) { return b.shape == Shape::hexahedron; });
     return true;

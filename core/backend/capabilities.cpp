@@ -22,6 +22,7 @@ const char* to_string(Feature f) {
         case Feature::stiffness_damping: return "stiffness-proportional damping";
         case Feature::deformable_blocks: return "deformable blocks";
         case Feature::general_hexahedra: return "general convex hexahedra";
+        case Feature::held_at_rest: return "a structure held at rest";
     }
     return "?";
 }

@@ -19,6 +19,7 @@ enum class Feature {
     stiffness_damping,   ///< "stiffness-proportional damping"
     deformable_blocks,   ///< "deformable blocks"
     general_hexahedra,   ///< "general convex hexahedra"
+    held_at_rest,   ///< "a structure held at rest"
 };
 
 /// One scene feature and how a backend represents it.
