@@ -343,8 +343,9 @@ TEST_CASE("a cube pushed at its top corner past the Coulomb limit of its pressed
     const double yaw15 = at(h.t, h.yaw, 1.5);
     INFO("yaw at 1.5 s " << yaw15 << " rad, at 2 s " << h.yaw.back() << " rad");
     // it turns (measured 0.143 rad by 1.5 s), which rotates the push's line towards the centre and
-    // shrinks its couple (0.2 → 0.2·(cos ψ − sin ψ) m), until the strip holds it again: by 2 s it
-    // has stopped (measured 0.1448 rad, 1.5 mrad more)
+    // shrinks its couple (0.2 → 0.2·(cos ψ − sin ψ) m); the strip would hold it from ψ = 0.075 rad
+    // on (the same analysis, turned), and it stops about as far past that as its momentum carries
+    // it: by 2 s it has stopped (measured 0.1448 rad, 1.5 mrad more)
     CHECK(yaw15 > 0.05);
     CHECK(std::abs(h.yaw.back() - yaw15) < 0.05 * yaw15);
 }
