@@ -25,6 +25,27 @@ std::vector<double> crossings(const Series& s, double level, Crossing dir, doubl
     return out;
 }
 
+namespace {
+/// the extremum at sample i (0 < i < n − 1; `sign` −1 for a minimum), at the vertex of the
+/// parabola through it and its neighbours where that falls between them
+Extremum refined_extremum(const Series& s, size_t i, double sign) {
+    const double y0 = sign * s.y[i - 1], y1 = sign * s.y[i], y2 = sign * s.y[i + 1];
+    const double t0 = s.t[i - 1], t1 = s.t[i], t2 = s.t[i + 1];
+    const double d1 = (y1 - y0) / (t1 - t0), d2 = (y2 - y1) / (t2 - t1);
+    const double c2 = (d2 - d1) / (t2 - t0);
+    Extremum e{t1, sign * y1};
+    if (c2 < 0.0) {
+        const double c1 = d1 - c2 * (t0 + t1);
+        const double tv = -c1 / (2.0 * c2);
+        if (tv > t0 && tv < t2) {
+            e.t = tv;
+            e.y = sign * (y1 + d1 * (tv - t1) + c2 * (tv - t0) * (tv - t1));
+        }
+    }
+    return e;
+}
+}  // namespace
+
 std::vector<Extremum> extrema(const Series& s, bool maxima, double prominence) {
     std::vector<Extremum> out;
     const double sign = maxima ? 1.0 : -1.0;
@@ -35,21 +56,40 @@ std::vector<Extremum> extrema(const Series& s, bool maxima, double prominence) {
         valley = std::min(valley, y1);
         if (!(y1 > y0 && y1 >= y2)) continue;
         if (y1 - valley < prominence) continue;
-        // vertex of the parabola through the three samples (uniform or not)
-        double t0 = s.t[i - 1], t1 = s.t[i], t2 = s.t[i + 1];
-        double d1 = (y1 - y0) / (t1 - t0), d2 = (y2 - y1) / (t2 - t1);
-        double c2 = (d2 - d1) / (t2 - t0);
-        Extremum e{t1, sign * y1};
-        if (c2 < 0.0) {
-            double c1 = d1 - c2 * (t0 + t1);
-            double tv = -c1 / (2.0 * c2);
-            if (tv > t0 && tv < t2) {
-                e.t = tv;
-                e.y = sign * (y1 + d1 * (tv - t1) + c2 * (tv - t0) * (tv - t1));
-            }
-        }
-        out.push_back(e);
+        out.push_back(refined_extremum(s, i, sign));
         valley = y1;
+    }
+    return out;
+}
+
+Swings swings(const Series& s, double prominence) {
+    Swings out;
+    const size_t n = s.y.size();
+    // a zigzag: once the signal has swung by the prominence it is rising or falling from the
+    // candidate turning point `c`, which a further rise (fall) moves on and a return by the
+    // prominence confirms
+    int dir = 0;
+    size_t hi = 0, lo = 0, c = 0;
+    double fall_to_lo = 0.0, rise_to_hi = 0.0;   // before the first swing: the swing into each
+    for (size_t i = 1; i < n; ++i) {
+        const double y = s.y[i];
+        if (dir == 0) {
+            if (y > s.y[hi]) hi = i, rise_to_hi = y - s.y[lo];
+            if (y < s.y[lo]) lo = i, fall_to_lo = s.y[hi] - y;
+            if (s.y[hi] - s.y[lo] >= prominence) {
+                // the first swing starts from a turn where the signal came into it by the
+                // prominence too, else from where the signal began
+                if (hi > lo && fall_to_lo >= prominence) out.minima.push_back(refined_extremum(s, lo, -1.0));
+                if (lo > hi && rise_to_hi >= prominence) out.maxima.push_back(refined_extremum(s, hi, 1.0));
+                dir = hi > lo ? 1 : -1, c = hi > lo ? hi : lo;
+            }
+        } else if (dir > 0) {
+            if (y > s.y[c]) c = i;
+            else if (s.y[c] - y >= prominence) out.maxima.push_back(refined_extremum(s, c, 1.0)), dir = -1, c = i;
+        } else {
+            if (y < s.y[c]) c = i;
+            else if (y - s.y[c] >= prominence) out.minima.push_back(refined_extremum(s, c, -1.0)), dir = 1, c = i;
+        }
     }
     return out;
 }
@@ -96,8 +136,16 @@ HeldDrift held_drift(const Series& s, double t0, double t1, double noise) {
     r.drift = line[1] * span;
     if (r.ringing <= noise) return r;
     // a ringing signal: a straight line through it tilts with the phase at which the window cuts
-    // the swings; the lines through its maxima and through its minima do not
-    const auto hi = extrema(w, true, noise), lo = extrema(w, false, noise);
+    // the swings; the lines through its maxima and through its minima do not. A turning point
+    // stands a tenth of the swing about the line (or the noise, if more) above the valleys on
+    // either side: a fast small ringing riding on a slow swing (undamped springs under a cyclic
+    // drive) has turning points all along the swing, whose lines would tilt as the straight one does
+    auto turns = swings(w, std::max(noise, 0.1 * r.ringing));
+    if (turns.maxima.size() < 2 || turns.minima.size() < 2)
+        // a window of about two swings: the turns at its edges are needed too, the local
+        // extrema that rise (fall) by the noise from the lowest (highest) value before them
+        turns = {extrema(w, true, noise), extrema(w, false, noise)};
+    const auto &hi = turns.maxima, &lo = turns.minima;
     if (hi.size() < 2 || lo.size() < 2) {
         r.resolved = false;
         return r;

@@ -30,6 +30,16 @@ struct Extremum {
 /// the lowest (highest) value since the previous one
 std::vector<Extremum> extrema(const Series& s, bool maxima, double prominence);
 
+/// the turning points of a signal's swings, maxima and minima in turn
+struct Swings {
+    std::vector<Extremum> maxima, minima;
+};
+/// turning points that stand at least `prominence` above (below) the signal on both sides before
+/// the next turning point of the other kind: small wiggles along a larger swing are not turns
+/// (nor is a maximum or minimum the signal begins or ends on, before it has swung into or out
+/// of it by the prominence)
+Swings swings(const Series& s, double prominence);
+
 /// least-squares polynomial y ≈ c0 + c1 t + c2 t² (+ ...) of the given degree over t in [t0, t1];
 /// returns the coefficients, lowest power first
 std::vector<double> polyfit(const Series& s, int degree, double t0 = -1e300, double t1 = 1e300);
@@ -45,7 +55,8 @@ struct HeldDrift {
 };
 
 /// the drift of s over t in [t0, t1]; `noise` (signal units, > 0) is the swing below which a
-/// straight-line fit is taken as it is and the prominence a turning point must have
+/// straight-line fit is taken as it is; turning points (`swings`) must stand out by the noise, and
+/// by a tenth of the largest swing about that line
 HeldDrift held_drift(const Series& s, double t0, double t1, double noise);
 
 /// y at time t, linear between samples, clamped to the ends
