@@ -79,8 +79,8 @@ Swings swings(const Series& s, double prominence) {
             if (s.y[hi] - s.y[lo] >= prominence) {
                 // the first swing starts from a turn where the signal came into it by the
                 // prominence too, else from where the signal began
-                if (hi > lo && fall_to_lo >= prominence) out.minima.push_back(refined_extremum(s, lo, -1.0));
-                if (lo > hi && rise_to_hi >= prominence) out.maxima.push_back(refined_extremum(s, hi, 1.0));
+                if (hi > lo && lo > 0 && fall_to_lo >= prominence) out.minima.push_back(refined_extremum(s, lo, -1.0));
+                if (lo > hi && hi > 0 && rise_to_hi >= prominence) out.maxima.push_back(refined_extremum(s, hi, 1.0));
                 dir = hi > lo ? 1 : -1, c = hi > lo ? hi : lo;
             }
         } else if (dir > 0) {

@@ -128,6 +128,11 @@ TEST_CASE("held drift: a fast ringing on a forced swing does not pass for turnin
         for (double t = 0.0; t <= 5.0 + 1e-12; t += 1e-3)
             s.t.push_back(t),
                 s.y.push_back(1.2e-6 * std::sin(4.0 * M_PI * t + phase) + 1e-8 * std::sin(2.0 * M_PI * 830.0 * t));
+        // the swings' turns: one maximum and one minimum a period, none of the wiggles
+        const auto turns = swings(s, 1e-7);
+        CHECK(turns.maxima.size() == 10);
+        CHECK(turns.minima.size() == 10);
+        for (const auto& e : turns.maxima) CHECK(e.y == Approx(1.2e-6).epsilon(0.02));
         const auto d = held_drift(s, 2.5, 5.0, 3.8e-9);
         REQUIRE(d.resolved);
         // the turning points of the swing carry the ±10 nm wiggle: 2 % of the swing
