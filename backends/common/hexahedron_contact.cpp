@@ -141,10 +141,12 @@ std::vector<HexContact> hexahedron_contacts(const Corners& ca, const Corners& cb
     }
 
     // edge-edge axes. Parallel edges share an axis and its depth (a box has four edges along each
-    // direction): of the pairs within round-off of the least depth, the one whose segments come
-    // closest is the pair that touches (the first found could be a far edge, and the contact point
-    // between far edges puts the force at the wrong place: its moment then does work the spring
-    // does not store)
+    // direction): of the pairs within round-off of the least depth, the one whose segments press
+    // deepest into each other along the axis is the pair that touches (the first found could be a
+    // far edge, and the contact point between far edges puts the force at the wrong place: its
+    // moment then does work the spring does not store). Deepest, not closest: an edge crossing a
+    // slanted face's two side edges is as close to the one it passes outside as to the one it
+    // presses into, and a pick between them by a hair flipped the point from end to end
     struct EdgePair {
         int a = -1, b = -1;
         double depth = 0.0;
@@ -171,14 +173,14 @@ std::vector<HexContact> hexahedron_contacts(const Corners& ca, const Corners& cb
         }
     int edge_a = -1;
     Vec3 edge_axis = Vec3::Zero(), edge_pa = Vec3::Zero(), edge_pb = Vec3::Zero();
-    double edge_gap = kInf;
+    double edge_press = -kInf;   // (pb − pa)·axis: how far A's point lies inside B's along the axis
     for (int k = 0; k < count; ++k) {
         const EdgePair& e = pairs[size_t(k)];
         if (e.depth > edge_depth + 1e-9 * size) continue;
         Vec3 pa, pb;
         closest_points(ca[kEdges[e.a][0]], ca[kEdges[e.a][1]], cb[kEdges[e.b][0]], cb[kEdges[e.b][1]], pa, pb);
-        if ((pa - pb).norm() < edge_gap) {
-            edge_gap = (pa - pb).norm();
+        if ((pb - pa).dot(e.axis) > edge_press) {
+            edge_press = (pb - pa).dot(e.axis);
             edge_a = e.a;
             edge_axis = e.axis;
             edge_pa = pa;

@@ -2,6 +2,8 @@
 // a non-box block resting on a base, and the shipped arch of voussoirs
 #include <catch2/catch.hpp>
 
+#include <algorithm>
+#include <array>
 #include <cmath>
 #include <string>
 
@@ -97,6 +99,62 @@ TEST_CASE("hexahedron contacts: crossed edges touch where they cross, an edge ac
         for (const auto& p : c) CHECK(p.position.x() == Approx(1.5).margin(1e-3));
         CHECK(std::abs(c[0].position.y() - c[1].position.y()) == Approx(0.4).margin(0.01));
     }
+}
+
+TEST_CASE("hexahedron contacts: an edge on a parallel edge is a line with a point at each end", "[engines][hexahedra]") {
+    // a voussoir tumbling onto a springer's top edge (docs/backends.md, "An edge across a slanted
+    // face"): a 0.4 × 0.8 × 0.2 m slab turned 0.7 rad about y, then tilted 2 mrad about x, its
+    // lowest edge (along y) pressed onto the base's top edge at x = 1.5 m, z = 0 by 1 mm at its
+    // middle: 1 ∓ 0.8 mm at its ends y = ±0.4 m
+    const Corners base = placed_corners(box_corners(Vec3(3, 1, 0.2)), Vec3(0, 0, -0.1), Quat::Identity());
+    const Quat q = Quat(Eigen::AngleAxisd(0.002, Vec3::UnitX())) * Quat(Eigen::AngleAxisd(0.7, Vec3::UnitY()));
+    Corners slab = placed_corners(box_corners(Vec3(0.4, 0.8, 0.2)), Vec3::Zero(), q);
+    std::array<int, 8> order{0, 1, 2, 3, 4, 5, 6, 7};
+    std::sort(order.begin(), order.end(), [&](int i, int j) { return slab[i].z() < slab[j].z(); });
+    const Vec3 edge_middle = 0.5 * (slab[order[0]] + slab[order[1]]);
+    slab = shifted(slab, Vec3(1.5, 0.0, -1e-3) - edge_middle);
+    const auto c = hexahedron_contacts(slab, base);
+    // one point would carry the line at one end, and jump to the other as the slab rocks about x:
+    // its spring's force then jumps with the depth, which does work the spring never stored
+    REQUIRE(c.size() == 2);
+    const auto& lo = c[0].position.y() < c[1].position.y() ? c[0] : c[1];
+    const auto& hi = c[0].position.y() < c[1].position.y() ? c[1] : c[0];
+    CHECK(lo.position.y() == Approx(-0.4).margin(1e-3));
+    CHECK(hi.position.y() == Approx(0.4).margin(1e-3));
+    for (const auto& p : c) CHECK(p.position.x() == Approx(1.5).margin(2e-3));
+    // each end's own overlap along the contact normal: the deeper end at y = −0.4 (the tilt lowers
+    // it by 0.8 mm); within 1 mm of its vertical depth's share along a normal off the vertical
+    CHECK(lo.depth > hi.depth);
+    CHECK(lo.depth - hi.depth > 0.5e-3);
+    CHECK(lo.normal.dot(hi.normal) == Approx(1.0));
+}
+
+TEST_CASE("hexahedron contacts: an edge across a slanted face touches at the end it presses in", "[engines][hexahedra]") {
+    // a voussoir of a 25-voussoir arch (R = 2 m, t/R = 0.15, 0.5 m deep) that fell onto its
+    // springer, as MuJoCo matched had it at t = 2.12379 s (docs/backends.md, "An edge across a
+    // slanted face"): the springer's top inner edge (along y at x = 1.5 m, z = 0) lies across the
+    // voussoir's face 0-1-2-3
+    const Corners springer = placed_corners(box_corners(Vec3(1.0, 1.0, 0.5)), Vec3(2.0, 0.0, -0.25), Quat::Identity());
+    const Corners voussoir = {Vec3(1.36845248944, -0.252860006009, -0.166156617216),
+                              Vec3(1.51578269357, -0.253095965626, 0.0134780808796),
+                              Vec3(1.51046355819, 0.24685054516, 0.0184973588807),
+                              Vec3(1.36313335406, 0.247086504777, -0.161137339215),
+                              Vec3(1.1250248538, -0.257209706819, 0.00912620103244),
+                              Vec3(1.29624644228, -0.257483930159, 0.217890850253),
+                              Vec3(1.2909273069, 0.242462580627, 0.222910128254),
+                              Vec3(1.11970571842, 0.242736803967, 0.0141454790335)};
+    const auto c = hexahedron_contacts(voussoir, springer);
+    // the voussoir's face is turned about its normal too, so the springer's edge presses 3.6 mm
+    // into it at y = −0.25 m and passes 3.7 mm outside it at +0.25 m (worked from the face's plane).
+    // The edge pair's axis is the springer's edge crossed with the face's side edges, which are
+    // parallel: their pairs tie in depth, and the closer of the two segments, by a hair, was the
+    // outside one at +0.247 m. The contact is where the edge presses in
+    REQUIRE(c.size() == 1);
+    CHECK(c[0].position.y() == Approx(-0.253).margin(3e-3));
+    CHECK(c[0].position.x() == Approx(1.5).margin(3e-3));
+    CHECK(c[0].position.z() == Approx(0.0).margin(3e-3));
+    // the overlap along the edge pair's axis, within a tenth of the depth behind the face's plane
+    CHECK(c[0].depth == Approx(3.6e-3).epsilon(0.1));
 }
 
 TEST_CASE("every backend: a slab sliding off a slab makes no energy", "[engines][hexahedra]") {
