@@ -173,14 +173,18 @@ std::vector<HexContact> hexahedron_contacts(const Corners& ca, const Corners& cb
         }
     int edge_a = -1;
     Vec3 edge_axis = Vec3::Zero(), edge_pa = Vec3::Zero(), edge_pb = Vec3::Zero();
-    double edge_press = -kInf;   // (pb − pa)·axis: how far A's point lies inside B's along the axis
+    // (pb − pa)·axis: how far A's point lies inside B's along the axis (the same for any points of
+    // the two edges' lines); a tie within round-off goes to the pair whose segments come closest
+    double edge_press = -kInf, edge_gap = kInf;
     for (int k = 0; k < count; ++k) {
         const EdgePair& e = pairs[size_t(k)];
         if (e.depth > edge_depth + 1e-9 * size) continue;
         Vec3 pa, pb;
         closest_points(ca[kEdges[e.a][0]], ca[kEdges[e.a][1]], cb[kEdges[e.b][0]], cb[kEdges[e.b][1]], pa, pb);
-        if ((pb - pa).dot(e.axis) > edge_press) {
-            edge_press = (pb - pa).dot(e.axis);
+        const double press = (pb - pa).dot(e.axis), gap = (pa - pb).norm();
+        if (press > edge_press + 1e-9 * size || (press > edge_press - 1e-9 * size && gap < edge_gap)) {
+            edge_press = std::max(edge_press, press);
+            edge_gap = gap;
             edge_a = e.a;
             edge_axis = e.axis;
             edge_pa = pa;
