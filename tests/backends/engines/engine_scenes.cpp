@@ -3,6 +3,8 @@
 #include <catch2/catch.hpp>
 
 #include <cmath>
+#include <fstream>
+#include <sstream>
 
 #include "error.hpp"
 #include "geometry/hexahedron.hpp"
@@ -34,6 +36,14 @@ std::vector<std::string> engine_names() {
     for (const auto& b : available_backends())
         if (b.name != "dem" && b.name != "double") names.push_back(b.name);   // not registry_test's double
     return names;
+}
+
+std::string shipped_scene_text(const std::string& relative) {
+    std::ifstream in(std::string(CAIRN_SOURCE_DIR) + "/scenarios/" + relative);
+    REQUIRE(in.good());
+    std::stringstream text;
+    text << in.rdbuf();
+    return text.str();
 }
 
 std::vector<std::string> all_backend_names() {

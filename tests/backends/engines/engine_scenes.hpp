@@ -51,6 +51,10 @@ int check_judged(const cases::CaseAnalysis& a);
 /// the metric of an analysis named `name` (fails the test when there is none)
 const metrics::Metric& find_metric(const cases::CaseAnalysis& a, const std::string& name);
 
+/// the text of a shipped scene file, `relative` to scenarios/ (e.g. "structures/column_pushover.toml"),
+/// to edit before parse_scene; fails the test when it cannot be read
+std::string shipped_scene_text(const std::string& relative);
+
 /// rotation angle about y of a rotation that is a pure y rotation, rad
 double angle_about_y(const Quat& q);
 

@@ -5,7 +5,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <fstream>
 #include <sstream>
 
 #include "engine_scenes.hpp"
@@ -120,10 +119,7 @@ TEST_CASE("every backend: a matched head joint springs over the brick's end and 
 TEST_CASE("reference engines: a matched drum column rocks alike under a one-sine pulse", "[engines][matched]") {
     // the three drums of scenarios/structures/column_pushover (0.4 x 0.4 x 0.5 m, kn 1e9 N/m³)
     // under a 0.35 g, 1.5 Hz one-sine pulse along x: the column uplifts (B/H = 0.267) and rocks
-    std::ifstream in(std::string(CAIRN_SOURCE_DIR) + "/scenarios/structures/column_pushover.toml");
-    std::stringstream text;
-    text << in.rdbuf();
-    std::string toml = text.str();
+    std::string toml = shipped_scene_text("structures/column_pushover.toml");
     std::ostringstream t, a;
     const double hz = 1.5;
     for (int i = 0; i <= 100; ++i) {

@@ -5,7 +5,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <fstream>
 #include <sstream>
 
 #include "cases/case_analysis.hpp"
@@ -40,10 +39,7 @@ double excess_slide(const Scene& scene) {
 /// the plane at 2 Hz in place of its pulse: `peak` g along x as a cosine and along y as a sine,
 /// its size ramped in over 0.5 s (inline records every 5 ms), for 3 s
 Scene circular_drive(double peak) {
-    std::ifstream in(std::string(CAIRN_SOURCE_DIR) + "/scenarios/earthquake/block_pulse_hold.toml");
-    std::stringstream text;
-    text << in.rdbuf();
-    std::string toml = text.str();
+    std::string toml = shipped_scene_text("earthquake/block_pulse_hold.toml");
     const size_t from = toml.find("[ground_motion]"), to = toml.find("[probes.base]");
     REQUIRE(from != std::string::npos);
     REQUIRE(to > from);

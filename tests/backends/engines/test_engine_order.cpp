@@ -4,8 +4,6 @@
 #include <catch2/catch.hpp>
 
 #include <cmath>
-#include <fstream>
-#include <sstream>
 
 #include "cases/case_analysis.hpp"
 #include "engine_scenes.hpp"
@@ -43,11 +41,8 @@ TEST_CASE("every backend: renaming a column's drums into the reverse order leave
     const std::string engine = GENERATE_COPY(from_range(engines));
     CAPTURE(engine);
     const std::string path = std::string(CAIRN_SOURCE_DIR) + "/scenarios/structures/column_pushover.toml";
-    std::ifstream in(path);
-    std::stringstream text;
-    text << in.rdbuf();
     // D1, D2, D3 bottom to top become Z1, Y2, X3: name order, hence block order, reversed
-    std::string renamed = replaced(text.str(), "D1", "Z1");
+    std::string renamed = replaced(shipped_scene_text("structures/column_pushover.toml"), "D1", "Z1");
     renamed = replaced(renamed, "D2", "Y2");
     renamed = replaced(renamed, "D3", "X3");
     const Scene original = load_scene(path), reversed = parse_scene(renamed, path);
