@@ -10,6 +10,7 @@
 #include "analytic/spring_block.hpp"
 #include "analytic/winkler_block.hpp"
 #include "cases/case_analysis.hpp"
+#include "cases/winkler_model.hpp"
 #include "scene/scene_io.hpp"
 
 using namespace cairn;
@@ -168,6 +169,26 @@ TEST_CASE("rocking: a built history judged against Housner (rigid), the spring b
         const double rock = 364.0 * 9.81 * hb.radius() * (std::cos(hb.alpha() - th0) - std::cos(hb.alpha()));
         run.back().energy.kinetic = 0.02 * rock;
         CHECK(std::string(find(cases::analyse_case(s, run, {true}), "energy closure").verdict()) == "miss");
+    }
+    SECTION("dem's overlap contact on a soft base: the Winkler base's half cycle, not Housner's") {
+        // the slender block (0.2 m wide) at kn 1e9: its edge sinks in on every swing, and the
+        // Winkler base's half cycle is 9 % longer than Housner's 2 t1(θ1) at the same amplitude
+        Scene sl = paper("rocking_slender");
+        sl.contact.scheme = ContactScheme::overlap;
+        sl.contact.kn = sl.contact.ks = 1e9;
+        oracle::HousnerBlock slender{0.1, 0.5, 9.81};
+        const double th = sl.reference->values.at("theta0");
+        const auto ref = cases::winkler_model(sl, {true}, Vec3::UnitY()).rock(th, 3.0, 1e-4);
+        REQUIRE(ref.crossings.size() >= 2);
+        const double t1 = ref.crossings[0], a1 = ref.amplitudes[0], h1 = ref.crossings[1] - ref.crossings[0];
+        REQUIRE(h1 > 1.05 * 2 * slender.first_impact(a1));   // the case this section is about
+        auto judge = [&](double half) {
+            auto run = run_of(sl, 3.0, dt, [](double) { return Vec3::Zero(); }, rocking_path(th, t1, {a1, 0.01}, {half, 0.3}));
+            return find(cases::analyse_case(sl, run, {true}), "half cycle (1st to 2nd impact)");
+        };
+        CHECK(judge(h1).reference == Approx(h1).epsilon(1e-3));
+        CHECK(std::string(judge(h1).verdict()) == "pass");
+        CHECK(std::string(judge(1.03 * h1).verdict()) == "miss");
     }
     SECTION("an engine's matched contact: no reference after the first impact") {
         const double t1 = hb.first_impact(th0), a1 = 0.05;
