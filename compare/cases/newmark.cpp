@@ -1,5 +1,6 @@
-// a block on a horizontal base driven along it by its loads (a ground motion's −m·a_g among them):
-// Newmark's rigid sliding block, which holds while the drive is inside the friction disk μ·n
+// a block on a plane base, level or inclined, driven along it by its loads (a ground motion's
+// −m·a_g among them) and by gravity's part along the plane: Newmark's rigid sliding block, which
+// holds while the drive is inside the friction disk μ·n
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -16,14 +17,52 @@ namespace {
 
 double rocking_ratio(const Scene& scene);
 
-/// refuses what Newmark's block leaves out: a tilted base, a spin or a vertical speed at release
+/// the base's top face (the block-frame +z of the first fixed block): its outward unit normal n and
+/// two unit directions t1, t2 = n × t1 in it (world x and y on a level base under gravity along −z)
+struct Base {
+    Vec3 n, t1, t2;
+};
+
+Base base_plane(const Scene& scene) {
+    for (const auto& b : scene.blocks) {
+        if (!b.fixed) continue;
+        Base p;
+        p.n = b.orientation * Vec3::UnitZ();
+        // the plane must face up, against gravity (an incline flatter than 89.9°)
+        if (!(scene.gravity.dot(p.n) < -std::cos(1.57) * scene.gravity.norm()))
+            throw Error(scene.source + ": reference.kind = \"newmark\": the top face (block-frame +z) of block '" + b.name +
+                        "' must face up against gravity, as a base the block rests on; it is at " +
+                        message_number(std::acos(std::clamp(-scene.gravity.normalized().dot(p.n), -1.0, 1.0))) +
+                        " rad to the upward vertical");
+        Vec3 t1 = Vec3::UnitX() - Vec3::UnitX().dot(p.n) * p.n;
+        if (t1.norm() < 1e-6) t1 = Vec3::UnitY() - Vec3::UnitY().dot(p.n) * p.n;
+        p.t1 = t1.normalized();
+        p.t2 = p.n.cross(p.t1);
+        return p;
+    }
+    throw Error(scene.source + ": reference.kind = \"newmark\" needs a fixed block as its base");
+}
+
+/// gravity and the loads per unit mass (m/s²) in the base's frame: (along t1, along t2, along n);
+/// the base presses with −(along n)
+std::function<Vec3(double)> plane_drive(const Scene& scene) {
+    const Base p = base_plane(scene);
+    const auto loads = reference_drive(scene);
+    const Vec3 g = scene.gravity;
+    return [p, loads, g](double t) {
+        const Vec3 f = g + loads(t);
+        return Vec3(f.dot(p.t1), f.dot(p.t2), f.dot(p.n));
+    };
+}
+
+/// refuses what Newmark's block leaves out: a base facing down, a spin or a speed off the base at release
 void check_newmark(const Scene& scene) {
-    require_horizontal_base(scene, "newmark");
+    const Base p = base_plane(scene);
     const BlockDef& d = scene.blocks.at(size_t(scene.reference->block));
-    if (d.angular_velocity.norm() > 0.0 || std::abs(d.velocity.z()) > 1e-9 * std::max(1.0, d.velocity.norm()))
+    if (d.angular_velocity.norm() > 0.0 || std::abs(d.velocity.dot(p.n)) > 1e-9 * std::max(1.0, d.velocity.norm()))
         throw Error(scene.source + ": reference.kind = \"newmark\": blocks." + d.name +
-                    ".velocity/angular_velocity: Newmark's block is launched along the base only (no spin, no vertical "
-                    "speed)");
+                    ".velocity/angular_velocity: Newmark's block is launched along the base only (no spin, no speed "
+                    "off the base's plane)");
     if (d.velocity.norm() > 0.0 && scene.contact.friction > rocking_ratio(scene))
         throw Error(scene.source + ": blocks." + d.name + ".velocity: launched with μ = " + message_number(scene.contact.friction) +
                     " above its b/h = " + message_number(rocking_ratio(scene)) +
@@ -33,20 +72,22 @@ void check_newmark(const Scene& scene) {
 /// the oracle's run over the scene's duration, launched at the block's initial velocity
 oracle::SlidingHistory oracle_run(const Scene& scene) {
     check_newmark(scene);
+    const Base p = base_plane(scene);
     const Vec3 v0 = scene.blocks.at(size_t(scene.reference->block)).velocity;
-    return oracle::newmark_slide(reference_drive(scene), gravity(scene), scene.contact.friction, scene.run.duration,
-                                 Vec2(v0.x(), v0.y()));
+    // in the base's frame, gravity is part of the drive: the oracle's own gravity is 0
+    return oracle::newmark_slide(plane_drive(scene), 0.0, scene.contact.friction, scene.run.duration,
+                                 Vec2(v0.dot(p.t1), v0.dot(p.t2)));
 }
 
-/// the largest horizontal drive per unit mass (m/s²) and its unit direction (x when there is none),
-/// sampled every 10 steps of the oracle's grid
+/// the largest drive along the base per unit mass (m/s², gravity's part included) and its unit
+/// direction in the base's frame (t1 when there is none), sampled every 10 steps of the oracle's grid
 struct LargestDrive {
     double size = 0.0;
     Vec2 dir = Vec2::UnitX();
 };
 
 LargestDrive largest_drive(const Scene& scene, const oracle::SlidingHistory& h) {
-    const auto f = reference_drive(scene);
+    const auto f = plane_drive(scene);
     LargestDrive out;
     for (size_t i = 0; i < h.t.size(); i += 10) {
         const Vec3 d = f(h.t[i]);
@@ -56,12 +97,13 @@ LargestDrive largest_drive(const Scene& scene, const oracle::SlidingHistory& h) 
     return out;
 }
 
-/// the horizontal unit direction the block is judged along: that of the oracle's final slide, or
-/// of the largest drive when it holds
-Vec3 judged_direction(const oracle::SlidingHistory& h, const LargestDrive& largest) {
+/// the world unit direction along the base the block is judged along: that of the oracle's final
+/// slide, or of the largest drive when it holds
+Vec3 judged_direction(const Scene& scene, const oracle::SlidingHistory& h, const LargestDrive& largest) {
+    const Base p = base_plane(scene);
     const Vec2 end = h.x.back();
     const Vec2 dir = end.norm() > 0.0 ? Vec2(end.normalized()) : largest.dir;
-    return Vec3(dir.x(), dir.y(), 0.0);
+    return dir.x() * p.t1 + dir.y() * p.t2;
 }
 
 /// the reference block's centre of mass moved along `e` since the first sample, m
@@ -72,54 +114,70 @@ metrics::Series along(const Scene& scene, const std::vector<Sample>& s, const Ve
     return out;
 }
 
-/// the oracle's displacement along `e` at the times `t`, m
-std::vector<double> along_oracle(const oracle::SlidingHistory& h, const Vec3& e, const std::vector<double>& t) {
+/// the base-frame components of the world direction `e` along the base
+Vec2 in_base(const Scene& scene, const Vec3& e) {
+    const Base p = base_plane(scene);
+    return Vec2(e.dot(p.t1), e.dot(p.t2));
+}
+
+/// the oracle's displacement along `e` (in the base's frame) at the times `t`, m
+std::vector<double> along_oracle(const oracle::SlidingHistory& h, const Vec2& e, const std::vector<double>& t) {
     std::vector<double> out;
-    for (double x : t) out.push_back(h.at(x).dot(Vec2(e.x(), e.y())));
+    for (double x : t) out.push_back(h.at(x).dot(e));
     return out;
 }
 
 std::vector<double> newmark_curve(const Scene& scene, ContactKind, const std::vector<double>& t) {
     const auto h = oracle_run(scene);
-    return along_oracle(h, judged_direction(h, largest_drive(scene, h)), t);
+    return along_oracle(h, in_base(scene, judged_direction(scene, h, largest_drive(scene, h))), t);
 }
 
-/// the least of the block's half-widths along x and y over the height of its centre of mass above
-/// its lowest corner (block frame): the drive's ratio to n beyond which a rigid block would rock
+/// the least of the block's half-widths across its height over the height of its centre of mass
+/// above its lowest side (block frame; its height is the frame axis nearest the base's normal, so a
+/// block laid on its side is measured as it lies): the drive's ratio to n beyond which a rigid block
+/// would rock
 double rocking_ratio(const Scene& scene) {
     const BlockDef& d = scene.blocks.at(size_t(scene.reference->block));
+    const Vec3 up = d.orientation.inverse() * base_plane(scene).n;   // the base's normal in the block frame
+    int k = 0;
+    for (int i = 1; i < 3; ++i)
+        if (std::abs(up[i]) > std::abs(up[k])) k = i;
     Vec3 lo = Vec3::Constant(1e300), hi = Vec3::Constant(-1e300);
     for (const auto& c : d.corners) lo = lo.cwiseMin(c), hi = hi.cwiseMax(c);
     const Vec3 centre = mass_properties(d.corners, 1.0).centre;
-    const double b = std::min(std::min(centre.x() - lo.x(), hi.x() - centre.x()), std::min(centre.y() - lo.y(), hi.y() - centre.y()));
-    return b / (centre.z() - lo.z());
+    double b = 1e300;
+    for (int i = 0; i < 3; ++i)
+        if (i != k) b = std::min(b, std::min(centre[i] - lo[i], hi[i] - centre[i]));
+    const double height = up[k] > 0.0 ? centre[k] - lo[k] : hi[k] - centre[k];
+    return b / height;
 }
 
 CaseAnalysis analyse_newmark(const Scene& scene, const std::vector<Sample>& s, ContactKind contact) {
     using namespace metrics;
     const auto h = oracle_run(scene);
     const LargestDrive largest = largest_drive(scene, h);
-    const Vec3 e = judged_direction(h, largest);
+    const Vec3 e = judged_direction(scene, h, largest);
+    const Vec2 e2 = in_base(scene, e);
     const int a = scene.reference->block;
     const double m = block_mass(scene, a), T = s.back().t;
     CaseAnalysis r;
     r.measured = along(scene, s, e);
     r.quantity = "displacement of A's centre of mass along the base, m";
-    r.analytic = along_oracle(h, e, r.measured.t);
-    r.analytic_label = "Newmark's rigid sliding block, μ·(g − f_z)";
+    r.analytic = along_oracle(h, e2, r.measured.t);
+    r.analytic_label = "Newmark's rigid sliding block, friction μ·f_n (μ·(g − f_z) on a level base)";
     r.analytic_key = "Newmark block";
     const double rock = rocking_ratio(scene);
-    char basis[300];
+    char basis[400];
     std::snprintf(basis, sizeof basis,
-                  "largest |f_h|/(g − f_z) of the loads per unit mass, against μ; the oracle holds the motion to "
-                  "sliding: it is valid while this stays below b/h = %.4g (a rigid block's rocking threshold)", rock);
+                  "largest |f_t|/f_n of gravity and the loads per unit mass along and into the base (|f_h|/(g − f_z) "
+                  "on a level base), against μ; the oracle holds the motion to sliding: it is valid while this stays "
+                  "below b/h = %.4g (a rigid block's rocking threshold)", rock);
     r.metrics.push_back(info("friction demand", "-", h.peak_ratio, scene.contact.friction, basis));
     const double slide = h.x.back().norm();
     // the run's largest displacement along e, either way, m
     const double moved_most = std::max(std::abs(max_value(r.measured)), std::abs(min_value(r.measured)));
     const bool springs = contact.penalty && contact.point_springs && scene.contact.ks > 0.0;
     if (slide > 0.0) {
-        const Vec2 e2(e.x(), e.y());
         double peak_ref = 0.0;
         for (const Vec2& x : h.x) peak_ref = std::max(peak_ref, std::abs(x.dot(e2)));
         // a record moves the block both ways and its final place is the difference: both the
@@ -133,9 +191,10 @@ CaseAnalysis analyse_newmark(const Scene& scene, const std::vector<Sample>& s, C
             // within one period 2π/ω, ω = √(ks·A/m)) it runs ahead at up to J/ω until it stops:
             // (J/ω)·t_slide (measured 1.15–1.2 × on a 0.4 m cube under a 0.8 g step at kn 1e8 and 1e9)
             const double w = std::sqrt(scene.contact.ks * contact_area(scene) / m);
-            const double stretch = scene.contact.friction * m * gravity(scene) / (scene.contact.ks * contact_area(scene));
+            const double pressed = -scene.gravity.dot(base_plane(scene).n);   // gravity's part into the base, m/s²
+            const double stretch = scene.contact.friction * m * pressed / (scene.contact.ks * contact_area(scene));
             const size_t lag = std::max<size_t>(1, size_t(std::lround(2.0 * M_PI / w / (h.t[1] - h.t[0]))));
-            const auto f = reference_drive(scene);
+            const auto f = plane_drive(scene);
             double jump = 0.0;
             for (size_t i = 0; i + lag < h.t.size(); ++i) {
                 const Vec3 d0 = f(h.t[i]), d1 = f(h.t[i + lag]);

@@ -156,6 +156,13 @@ TEST_CASE("a block under ground pulses closes the energy balance, rigid and defo
         check_closes({"earthquake/block_pulse_slide", "earthquake/block_pulse_hold"}, {"paper", "overlap"}, model);
 }
 
+TEST_CASE("a block sliding down a slope under a ground pulse closes the energy balance, rigid and deformable",
+          "[dem][energy]") {
+    // gravity's work along the plane and the slide's friction work (the block's frame tilted with it)
+    for (const char* model : {"rigid", "deformable"})
+        check_closes({"earthquake/slope_pulse_slide"}, {"paper", "overlap"}, model);
+}
+
 TEST_CASE("a block rocking or overturning under a ground pulse closes the energy balance", "[dem][energy]") {
     // the one-sine pulses of the ground_rocking scenes: the drive's work in, rocking impacts out.
     // The overturning block lands on its side: on its own (overlap) scheme it closes (measured
