@@ -1,7 +1,9 @@
 #pragma once
 /// Newmark's sliding block (Newmark 1965, "Effects of earthquakes on dams and embankments"): a
 /// rigid block on a rigid horizontal base with Coulomb friction, driven along the base by loads
-/// (a ground motion's −m·a_g among them). SI units.
+/// (a ground motion's −m·a_g among them). SI units. A base inclined or gravity in another direction
+/// is the same block in the base's frame: the caller gives the drive along the plane and into it,
+/// gravity included, with g = 0 (compare/cases/newmark.cpp).
 
 #include <functional>
 #include <vector>
