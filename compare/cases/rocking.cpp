@@ -185,7 +185,10 @@ CaseAnalysis analyse_rocking(const Scene& scene, const std::vector<Sample>& s, C
                                       ? "Winkler base (dem's overlap contact, the same law per sub-contact); 2 %"
                                       : "spring block (same springs, same law, dt ≤ T/1000); 2 %";
         if (!std::isfinite(ref)) {
-            if (k < amps.size()) out.metrics.push_back(info(names[k], "rad", amps[k], NAN, "no reference amplitude: its swing does not end within the run, or it stops rocking before"));
+            if (k < amps.size())
+                out.metrics.push_back(info(names[k], "rad", amps[k], NAN,
+                                           "no reference amplitude: its swing does not end within the run, or it stops "
+                                           "rocking before"));
             continue;
         }
         if (k < amps.size()) out.metrics.push_back(relative(names[k], "rad", amps[k], ref, 0.02, basis));

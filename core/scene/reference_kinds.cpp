@@ -9,7 +9,7 @@ const std::vector<ReferenceKind>& reference_kinds() {
         {"slide", {"force"}},                                  // horizontal force (N), slides
         {"stick", {"force"}},                                  // horizontal force (N), holds
         {"incline", {"angle"}},                                // plane angle (rad)
-        {"newmark", {}},                                       // loads along a plane base, level or inclined (ground motion): Newmark's sliding block
+        {"newmark", {}},                                       // loads along a plane base, level or tilted: Newmark's block
         {"rolling", {"slope"}},                                // slope angle (rad)
         {"housner", {"theta0", "axis_x", "axis_y", "axis_z", "impacts"}}, // release tilt (rad), rocking axis, impacts judged on a calibrated damped contact
         {"winkler_rocking", {"theta0", "axis_x", "axis_y", "axis_z"}},   // release tilt (rad), rocking axis: on a Winkler base of modulus kn
