@@ -88,8 +88,8 @@ TEST_CASE("every backend: a horizontal ground pulse slides a block on a slope Ne
     const std::string engine = GENERATE(from_range(all_backend_names()));
     CAPTURE(engine);
     // slope_pulse_slide: 10°, μ = 0.5, 0.5 g for 0.3 s pushing it downhill: 0.16107 m for a perfect
-    // rectangle, 0.16104 m with the 0.1 ms edges (the oracle, checked against an independent 1-D
-    // integration). Measured: Bullet, ODE, MuJoCo +0.02 %, Siconos −0.02 %, dem +0.30 % (kn 1e10,
+    // rectangle, 0.16104 m with the 0.1 ms edges (the oracle; the closed form is checked in
+    // test_case_kinds). Measured: Bullet, ODE, MuJoCo +0.02 %, Siconos −0.02 %, dem +0.30 % (kn 1e10,
     // allowed 2 %)
     judge(engine, shipped("slope_pulse_slide"), 2);   // the largest and the final slide
 }
