@@ -97,13 +97,11 @@ LargestDrive largest_drive(const Scene& scene, const oracle::SlidingHistory& h) 
     return out;
 }
 
-/// the world unit direction along the base the block is judged along: that of the oracle's final
+/// the unit direction in the base's frame the block is judged along: that of the oracle's final
 /// slide, or of the largest drive when it holds
-Vec3 judged_direction(const Scene& scene, const oracle::SlidingHistory& h, const LargestDrive& largest) {
-    const Base p = base_plane(scene);
+Vec2 judged_direction(const oracle::SlidingHistory& h, const LargestDrive& largest) {
     const Vec2 end = h.x.back();
-    const Vec2 dir = end.norm() > 0.0 ? Vec2(end.normalized()) : largest.dir;
-    return dir.x() * p.t1 + dir.y() * p.t2;
+    return end.norm() > 0.0 ? Vec2(end.normalized()) : largest.dir;
 }
 
 /// the reference block's centre of mass moved along `e` since the first sample, m
@@ -112,12 +110,6 @@ metrics::Series along(const Scene& scene, const std::vector<Sample>& s, const Ve
     metrics::Series out{times(s), {}};
     for (const auto& x : s) out.y.push_back((x.blocks.at(f).position - s.front().blocks.at(f).position).dot(e));
     return out;
-}
-
-/// the base-frame components of the world direction `e` along the base
-Vec2 in_base(const Scene& scene, const Vec3& e) {
-    const Base p = base_plane(scene);
-    return Vec2(e.dot(p.t1), e.dot(p.t2));
 }
 
 /// the oracle's displacement along `e` (in the base's frame) at the times `t`, m
@@ -129,7 +121,7 @@ std::vector<double> along_oracle(const oracle::SlidingHistory& h, const Vec2& e,
 
 std::vector<double> newmark_curve(const Scene& scene, ContactKind, const std::vector<double>& t) {
     const auto h = oracle_run(scene);
-    return along_oracle(h, in_base(scene, judged_direction(scene, h, largest_drive(scene, h))), t);
+    return along_oracle(h, judged_direction(h, largest_drive(scene, h)), t);
 }
 
 /// the least of the block's half-widths across its height over the height of its centre of mass
@@ -156,8 +148,9 @@ CaseAnalysis analyse_newmark(const Scene& scene, const std::vector<Sample>& s, C
     using namespace metrics;
     const auto h = oracle_run(scene);
     const LargestDrive largest = largest_drive(scene, h);
-    const Vec3 e = judged_direction(scene, h, largest);
-    const Vec2 e2 = in_base(scene, e);
+    const Vec2 e2 = judged_direction(h, largest);
+    const Base base = base_plane(scene);
+    const Vec3 e = e2.x() * base.t1 + e2.y() * base.t2;   // the same direction in the world
     const int a = scene.reference->block;
     const double m = block_mass(scene, a), T = s.back().t;
     CaseAnalysis r;
@@ -191,7 +184,7 @@ CaseAnalysis analyse_newmark(const Scene& scene, const std::vector<Sample>& s, C
             // within one period 2π/ω, ω = √(ks·A/m)) it runs ahead at up to J/ω until it stops:
             // (J/ω)·t_slide (measured 1.15–1.2 × on a 0.4 m cube under a 0.8 g step at kn 1e8 and 1e9)
             const double w = std::sqrt(scene.contact.ks * contact_area(scene) / m);
-            const double pressed = -scene.gravity.dot(base_plane(scene).n);   // gravity's part into the base, m/s²
+            const double pressed = -scene.gravity.dot(base.n);   // gravity's part into the base, m/s²
             const double stretch = scene.contact.friction * m * pressed / (scene.contact.ks * contact_area(scene));
             const size_t lag = std::max<size_t>(1, size_t(std::lround(2.0 * M_PI / w / (h.t[1] - h.t[0]))));
             const auto f = plane_drive(scene);
