@@ -21,6 +21,7 @@ struct ContactKind {
     /// hitting-face divisions of the reference block along its block-frame axes (1: a rigid block's
     /// single face per side; a deformable block's mesh divisions: its hitting grid is per boundary face)
     std::array<int, 3> divisions{1, 1, 1};
+    bool deformable = false;    ///< the reference block runs as a hex8 mesh (dem's deformable variant)
 };
 
 /// Metrics and figure data of one run.

@@ -31,6 +31,26 @@ double contact_area(const Scene& scene) {
 
 double gravity(const Scene& scene) { return scene.gravity.norm(); }
 
+double joint_to_block_stiffness(const Scene& scene, int b) {
+    const BlockDef& d = scene.blocks.at(size_t(b));
+    double lo = 1e300, hi = -1e300;
+    for (const auto& c : d.corners) lo = std::min(lo, c.z()), hi = std::max(hi, c.z());
+    return scene.contact.kn * (hi - lo) / scene.materials.at(size_t(d.material)).young;
+}
+
+std::string flexible_block_reason(const Scene& scene, int b, bool deformable) {
+    if (!deformable) return "";
+    const double r = joint_to_block_stiffness(scene, b);
+    if (r <= kRigidAgainstJoints) return "";
+    char buf[320];
+    std::snprintf(buf, sizeof buf,
+                  "not judged: the deformable block is compliant against its joints (kn·h/E = %.3g, above %.3g): its "
+                  "vibration takes and gives back rocking energy at every impact, which the rigid-block references "
+                  "leave out (docs/validation.md, \"A flexible block rocking\")",
+                  r, kRigidAgainstJoints);
+    return buf;
+}
+
 int free_index(const Scene& scene, int block) {
     assert(block >= 0 && size_t(block) < scene.blocks.size());   // the loader resolved the name
     int k = 0;

@@ -23,6 +23,18 @@ double contact_area(const Scene& scene);
 /// a ground motion's −m·a_g among them (point loads as if at the centre of mass); it reads
 /// `scene`, which must outlive it
 std::function<Vec3(double)> reference_drive(const Scene& scene);
+/// kn·h/E of block `b`: the joints' stiffness per unit area (kn, N/m³) against the block's own
+/// axial stiffness per unit area over its height h (frame z), E/h; dimensionless. Near 0 the block
+/// is rigid against its joints; where it is not, a deformable block's vibration trades energy
+/// with its rigid motion at every impact
+double joint_to_block_stiffness(const Scene& scene, int b);
+/// the largest kn·h/E at which a deformable block is judged against a rigid block's rocking after
+/// its impacts: a 2 × 1.5 × 8 m pillar swings 0.9 % off the Winkler base's amplitude after its
+/// second impact at 0.004 and 3.6 % at 0.013 (docs/validation.md, "A flexible block rocking")
+inline constexpr double kRigidAgainstJoints = 0.005;
+/// why a deformable block's swings after an impact are shown and not judged, or empty when its
+/// kn·h/E is within kRigidAgainstJoints (or the variant's block is rigid)
+std::string flexible_block_reason(const Scene& scene, int b, bool deformable);
 /// |gravity|, m/s²
 double gravity(const Scene& scene);
 /// index of the reference block among the free blocks (Sample::blocks order)

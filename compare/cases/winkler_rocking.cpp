@@ -75,7 +75,11 @@ CaseAnalysis analyse_winkler(const Scene& scene, const std::vector<Sample>& s, C
     double amp = 0.0;
     for (size_t i = 0; i < th.t.size(); ++i)
         if (th.t[i] > cross[0] && th.t[i] < end) amp = std::max(amp, std::abs(th.y[i]));
-    if (tr.amplitudes.empty()) {
+    const std::string flexible = flexible_block_reason(scene, scene.reference->block, contact.deformable);
+    if (!flexible.empty()) {
+        out.metrics.push_back(info("amplitude after 1st impact", "rad", amp,
+                                   tr.amplitudes.empty() ? NAN : tr.amplitudes[0], flexible));
+    } else if (tr.amplitudes.empty()) {
         out.metrics.push_back(info("amplitude after 1st impact", "rad", amp, NAN,
                                    "the Winkler base does not come back within the run (past its slenderness it overturns)"));
     } else if (cross.size() > 1) {

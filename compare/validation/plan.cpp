@@ -9,6 +9,7 @@ cases::ContactKind contact_kind(const Variant& v, const Scene& scene) {
     k.penalty = v.penalty();
     k.point_springs = v.backend == "dem";
     if (v.model == "deformable" && scene.reference) {
+        k.deformable = true;
         k.divisions = scene.blocks.at(scene.reference->block).mesh.divisions;
     }
     return k;

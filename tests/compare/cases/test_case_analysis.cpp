@@ -10,6 +10,7 @@
 #include "analytic/spring_block.hpp"
 #include "analytic/winkler_block.hpp"
 #include "cases/case_analysis.hpp"
+#include "cases/case_util.hpp"
 #include "cases/winkler_model.hpp"
 #include "scene/scene_io.hpp"
 
@@ -189,6 +190,35 @@ TEST_CASE("rocking: a built history judged against Housner (rigid), the spring b
         CHECK(judge(h1).reference == Approx(h1).epsilon(1e-3));
         CHECK(std::string(judge(h1).verdict()) == "pass");
         CHECK(std::string(judge(1.03 * h1).verdict()) == "miss");
+    }
+    SECTION("a deformable block soft against its joints: its swings after an impact are shown, not judged") {
+        // the slender block at kn 1e9 and E 3e10 Pa: kn·h/E = 0.033, past the 0.005 below which a
+        // deformable block rocks as the rigid one (docs/validation.md, "A flexible block rocking")
+        Scene sl = paper("rocking_slender");
+        sl.contact.scheme = ContactScheme::overlap;
+        sl.contact.kn = sl.contact.ks = 1e9;
+        CHECK(cases::joint_to_block_stiffness(sl, sl.reference->block) == Approx(1e9 * 1.0 / 30e9));
+        const double th = sl.reference->values.at("theta0");
+        cases::ContactKind deformable;
+        deformable.deformable = true;
+        deformable.divisions = sl.blocks.at(size_t(sl.reference->block)).mesh.divisions;
+        const auto ref = cases::winkler_model(sl, deformable, Vec3::UnitY()).rock(th, 3.0, 1e-4);
+        REQUIRE(ref.crossings.size() >= 2);
+        // the first swing 30 % short, as a flexible pillar's (a miss for a rigid block)
+        const double t1 = ref.crossings[0], a1 = 0.7 * ref.amplitudes[0], h1 = ref.crossings[1] - ref.crossings[0];
+        auto run = run_of(sl, 3.0, dt, [](double) { return Vec3::Zero(); }, rocking_path(th, t1, {a1, 0.01}, {h1, 0.3}));
+        auto a = cases::analyse_case(sl, run, deformable);
+        CHECK(std::string(find(a, "amplitude after 1st impact").verdict()) == "info");
+        CHECK(find(a, "amplitude after 1st impact").reference == Approx(ref.amplitudes[0]).epsilon(1e-3));
+        CHECK_THAT(find(a, "amplitude after 1st impact").basis, Catch::Matchers::Contains("kn·h/E = 0.0333"));
+        CHECK(std::string(find(a, "half cycle (1st to 2nd impact)").verdict()) == "info");
+        // the same block ten times stiffer (E 3e11 Pa: kn·h/E = 0.0033) is judged, and misses
+        sl.materials.at(size_t(sl.blocks.at(size_t(sl.reference->block)).material)).young = 3e11;
+        CHECK(std::string(find(cases::analyse_case(sl, run, deformable), "amplitude after 1st impact").verdict()) == "miss");
+        // and the rigid variant of the soft block is judged whatever kn·h/E
+        sl.materials.at(size_t(sl.blocks.at(size_t(sl.reference->block)).material)).young = 3e10;
+        cases::ContactKind rigid_block;
+        CHECK(std::string(find(cases::analyse_case(sl, run, rigid_block), "amplitude after 1st impact").verdict()) == "miss");
     }
     SECTION("an engine's matched contact: no reference after the first impact") {
         const double t1 = hb.first_impact(th0), a1 = 0.05;
