@@ -219,6 +219,12 @@ CaseAnalysis analyse_ground(const Scene& scene, const std::vector<Sample>& sampl
     const Series ref_curve{t, out.analytic};
     const Response ref = read_response(ref_curve, mark, s.alpha);
     const Trust trust = trust_of(scene, contact, s, ref_curve, ref.overturned);
+    // a deformable block far softer than a rigid one against its joints rocks as a flexible body
+    const std::string flexible = flexible_block_reason(scene, scene.reference->block, contact.deformable, kRigidUnderDrive);
+    if (!flexible.empty()) {
+        out.metrics.push_back(info("largest rotation", "rad", run.largest, ref.largest, flexible));
+        return out;
+    }
     const char* slop = " (rigid-contact engines: their step and contact slop)";
     const std::string model = winkler         ? "the Winkler base (dem's contact law, integrated independently)"
                               : s.columns > 1 ? std::string("the rigid frame of Makris & Vassiliou") + slop
