@@ -94,11 +94,12 @@ metrics::Series com_series(const std::vector<Sample>& s, int f, int c, bool rela
     return out;
 }
 
-metrics::Series angle_series(const std::vector<Sample>& s, int f, const Vec3& axis) {
+metrics::Series angle_series(const std::vector<Sample>& s, int f, const Vec3& axis, const Quat& from) {
     metrics::Series out{times(s), {}};
     double prev = 0.0, offset = 0.0;
+    const Quat back = from.conjugate();
     for (size_t i = 0; i < s.size(); ++i) {
-        const Quat& q = s[i].blocks.at(f).orientation;
+        const Quat q = s[i].blocks.at(f).orientation * back;
         // twist of q about the axis: 2 atan2(q_v·axis, q_w)
         double a = 2.0 * std::atan2(Vec3(q.x(), q.y(), q.z()).dot(axis), q.w());
         if (i > 0) {
@@ -120,6 +121,14 @@ Vec3 rocking_axis(const Scene& scene) {
 
 Vec3 rocking_axis_block(const Scene& scene) {
     return scene.blocks.at(size_t(scene.reference->block)).orientation.conjugate() * rocking_axis(scene);
+}
+
+Quat upright_orientation(const Scene& scene) {
+    const BlockDef& d = scene.blocks.at(size_t(scene.reference->block));
+    const Vec3 up = -scene.gravity.normalized(), axis = rocking_axis(scene), height = d.orientation * Vec3::UnitZ();
+    // the signed lean of the block's height from the vertical about the axis
+    const double lean = std::atan2(up.cross(height).dot(axis), up.dot(height));
+    return Quat(Eigen::AngleAxisd(-lean, axis)) * d.orientation;
 }
 
 void require_tilted_release(const Scene& scene, const std::string& kind) {

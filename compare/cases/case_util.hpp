@@ -78,9 +78,13 @@ void require_drive_modelled(const Scene& scene, const std::string& kind, DriveMo
 metrics::Series probe_series(const std::vector<Sample>& s, int p, int c, bool relative);
 /// component c of the centre of mass of free block f, minus its value at t = 0 when `relative`
 metrics::Series com_series(const std::vector<Sample>& s, int f, int c, bool relative);
-/// signed rotation angle (rad) of free block f about the unit world axis, from its orientation,
-/// unwrapped to be continuous in time
-metrics::Series angle_series(const std::vector<Sample>& s, int f, const Vec3& axis);
+/// signed rotation angle (rad) of free block f about the unit world axis, from the orientation
+/// `from` (world; identity: from the world's axes), unwrapped to be continuous in time
+metrics::Series angle_series(const std::vector<Sample>& s, int f, const Vec3& axis, const Quat& from = Quat::Identity());
+/// the reference block of a tilted release (housner, winkler_rocking) stood upright: its scene
+/// orientation turned back by its lean about the rocking axis, so that its tilt is measured from
+/// the upright block in any world (gravity along −y, a rocking axis the world turned about)
+Quat upright_orientation(const Scene& scene);
 /// the sample times
 std::vector<double> times(const std::vector<Sample>& s);
 

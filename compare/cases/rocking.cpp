@@ -98,7 +98,7 @@ CaseAnalysis analyse_rocking(const Scene& scene, const std::vector<Sample>& s, C
     const Model model = model_for(scene, contact);
     const std::string no_model_reason = model == Model::none ? unmodelled_reason(scene, contact) : "";
     CaseAnalysis out;
-    Series th = angle_series(s, free_index(scene, scene.reference->block), rocking_axis(scene));
+    Series th = angle_series(s, free_index(scene, scene.reference->block), rocking_axis(scene), upright_orientation(scene));
     out.quantity = "rocking angle θ of A, rad";
     out.measured = th;
     const double duration = th.t.back();

@@ -39,7 +39,7 @@ CaseAnalysis analyse_winkler(const Scene& scene, const std::vector<Sample>& s, C
     CaseAnalysis out;
     const double th0 = release_tilt(scene);
     const auto hb = housner_block(scene);
-    Series th = angle_series(s, free_index(scene, scene.reference->block), rocking_axis(scene));
+    Series th = angle_series(s, free_index(scene, scene.reference->block), rocking_axis(scene), upright_orientation(scene));
     out.quantity = "rocking angle θ of A, rad";
     out.measured = th;
     const auto cross = crossings(th, 0.0, Crossing::any);

@@ -234,6 +234,40 @@ TEST_CASE("rocking: a built history judged against Housner (rigid), the spring b
     }
 }
 
+TEST_CASE("rocking: the tilt is measured from the upright block in any world", "[cases]") {
+    // reading B's history, then the scene and its history turned whole: gravity along −y (turned about
+    // x), along −x (turned about the rocking axis itself) and along a skew axis. Each is measured from
+    // its own upright block; measured from the world's axes, the turn about the rocking axis added
+    // its 90° to θ, and the block "never came back upright"
+    const Scene s = paper("rocking");
+    oracle::HousnerBlock hb{0.35, 0.5, 9.81};
+    const double th0 = s.reference->values.at("theta0");
+    const double t1 = hb.first_impact(th0), a1 = hb.amplitude_after(th0, 1), h1 = 2 * hb.first_impact(a1);
+    const auto run = run_of(s, 3.0, 1e-4, [](double) { return Vec3::Zero(); }, rocking_path(th0, t1, {a1, 0.02}, {h1, 0.3}));
+    const auto flat = cases::analyse_case(s, run, {false});
+    for (const auto& [axis, angle] : {std::pair<Vec3, double>{Vec3::UnitX(), -M_PI / 2}, {Vec3::UnitY(), M_PI / 2},
+                                      {Vec3(1, 1, 1).normalized(), 2.0}}) {
+        const Quat r(Eigen::AngleAxisd(angle, axis));
+        Scene turned = s;
+        turned.gravity = r * s.gravity;
+        for (auto& b : turned.blocks) b.position = r * b.position, b.orientation = r * b.orientation;
+        const Vec3 a = r * cases::rocking_axis(s);
+        turned.reference->values["axis_x"] = a.x();
+        turned.reference->values["axis_y"] = a.y();
+        turned.reference->values["axis_z"] = a.z();
+        auto moved = run;
+        for (auto& x : moved)
+            for (auto& b : x.blocks) b.position = r * b.position, b.orientation = r * b.orientation;
+        const auto same = cases::analyse_case(turned, moved, {false});
+        INFO("turned " << angle << " rad about (" << axis.transpose() << ")");
+        for (const char* m : {"first impact", "amplitude after 1st impact", "half cycle (1st to 2nd impact)"}) {
+            INFO(m);
+            // 1e-9: the same history, turned and turned back in double precision
+            CHECK(find(same, m).value == Approx(find(flat, m).value).epsilon(1e-9));
+        }
+    }
+}
+
 TEST_CASE("friction_stick: a built base displacement judged against the Winkler block", "[cases]") {
     Scene s = paper("friction_stick");
     const double W = 325.0 * 9.81, H = s.reference->values.at("force");
