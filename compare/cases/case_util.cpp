@@ -206,6 +206,41 @@ void require_horizontal_base(const Scene& scene, const std::string& kind) {
     throw Error(scene.source + ": a " + kind + " reference needs a fixed block as its base");
 }
 
+Quat gravity_down(const Scene& scene) {
+    const Vec3 g = scene.gravity.normalized();
+    if (g.dot(-Vec3::UnitZ()) >= 1.0 - 1e-15) return Quat::Identity();
+    return Quat::FromTwoVectors(g, -Vec3::UnitZ());
+}
+
+Scene turned_scene(const Scene& scene, const Quat& r) {
+    Scene out = scene;
+    out.gravity = r * scene.gravity;
+    for (auto& b : out.blocks) {
+        b.position = r * b.position;
+        b.orientation = (r * b.orientation).normalized();
+        b.velocity = r * b.velocity;
+        b.angular_velocity = r * b.angular_velocity;
+    }
+    for (auto& l : out.loads) l.force = r * l.force;
+    if (out.ground_motion)
+        for (auto& c : out.ground_motion->components) c.direction = r * c.direction;
+    return out;
+}
+
+std::vector<Sample> turned_samples(const std::vector<Sample>& s, const Quat& r) {
+    std::vector<Sample> out = s;
+    for (auto& x : out) {
+        for (auto& p : x.probes) p = r * p;
+        for (auto& b : x.blocks) {
+            b.position = r * b.position;
+            b.orientation = (r * b.orientation).normalized();
+            b.velocity = r * b.velocity;
+            b.angular_velocity = r * b.angular_velocity;
+        }
+    }
+    return out;
+}
+
 metrics::Metric slip_while_held(const metrics::Series& s, double t0, double t1, double tol, const std::string& basis,
                                 metrics::HeldDrift* held) {
     const auto d = metrics::held_drift(s, t0, t1, 0.25 * tol);

@@ -65,6 +65,14 @@ oracle::HousnerBlock housner_block(const Scene& scene, const Vec3& axis);
 /// base) stands upright within 1e-3 rad
 void require_horizontal_base(const Scene& scene, const std::string& kind);
 
+/// the turn (world) that brings the scene's gravity onto −z: identity when it runs along −z already
+Quat gravity_down(const Scene& scene);
+/// the scene turned whole by `r` (world): its blocks' places, orientations and speeds, gravity, the
+/// loads and the ground motion's directions (block-frame data, probes and load points, stay)
+Scene turned_scene(const Scene& scene, const Quat& r);
+/// a run's samples turned whole by `r` (world), as turned_scene turns its scene
+std::vector<Sample> turned_samples(const std::vector<Sample>& s, const Quat& r);
+
 /// what a kind's oracle models of the scene's drive, beyond gravity
 struct DriveModelled {
     bool loads_on_reference = false;   ///< the `[loads]` on the reference block (no other load)
