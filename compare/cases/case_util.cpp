@@ -132,6 +132,33 @@ Quat upright_orientation(const Scene& scene) {
     return Quat(Eigen::AngleAxisd(-lean, axis)) * d.orientation;
 }
 
+namespace {
+
+/// the free block whose top the lowest corner of block d touches (within 1 % of d's height) and
+/// lies over, or nullptr; `up` against gravity, `axis` horizontal
+const BlockDef* free_block_under(const Scene& scene, const BlockDef& d, const Vec3& up, const Vec3& axis) {
+    const Corners w = placed_corners(d.corners, d.position, d.orientation);
+    Vec3 low = w[0];
+    for (const auto& c : w)
+        if (c.dot(up) < low.dot(up)) low = c;
+    const double height = (w[4] - w[0]).norm();
+    const Vec3 e1 = axis, e2 = up.cross(axis);
+    for (const auto& b : scene.blocks) {
+        if (b.fixed || &b == &d) continue;
+        double top = -1e300, lo1 = 1e300, hi1 = -1e300, lo2 = 1e300, hi2 = -1e300;
+        for (const auto& c : placed_corners(b.corners, b.position, b.orientation)) {
+            top = std::max(top, c.dot(up));
+            lo1 = std::min(lo1, c.dot(e1)), hi1 = std::max(hi1, c.dot(e1));
+            lo2 = std::min(lo2, c.dot(e2)), hi2 = std::max(hi2, c.dot(e2));
+        }
+        const double x1 = low.dot(e1), x2 = low.dot(e2);
+        if (std::abs(low.dot(up) - top) <= 0.01 * height && x1 >= lo1 && x1 <= hi1 && x2 >= lo2 && x2 <= hi2) return &b;
+    }
+    return nullptr;
+}
+
+}  // namespace
+
 void require_tilted_release(const Scene& scene, const std::string& kind) {
     const BlockDef& d = scene.blocks.at(size_t(scene.reference->block));
     const Vec3 up = -scene.gravity.normalized(), axis = rocking_axis(scene), height = d.orientation * Vec3::UnitZ();
@@ -148,32 +175,14 @@ void require_tilted_release(const Scene& scene, const std::string& kind) {
                       "height when upright",
                       d.name.c_str(), lean, std::abs(height.dot(axis)) > 1e-3 ? " and out of the plane across the axis" : "",
                       theta0);
-    if (!why[0]) {
-        // the references rock the block on a fixed base: a free block under it (a column's lower
-        // drum) would move with the impacts; named, not judged against a fixed base
-        const Corners w = placed_corners(d.corners, d.position, d.orientation);
-        Vec3 low = w[0];
-        for (const auto& c : w)
-            if (c.dot(up) < low.dot(up)) low = c;
-        const double height = (w[4] - w[0]).norm();
-        const Vec3 e1 = axis, e2 = up.cross(axis);
-        for (const auto& b : scene.blocks) {
-            if (b.fixed || &b == &d) continue;
-            const Corners bw = placed_corners(b.corners, b.position, b.orientation);
-            double top = -1e300, lo1 = 1e300, hi1 = -1e300, lo2 = 1e300, hi2 = -1e300;
-            for (const auto& c : bw) {
-                top = std::max(top, c.dot(up));
-                lo1 = std::min(lo1, c.dot(e1)), hi1 = std::max(hi1, c.dot(e1));
-                lo2 = std::min(lo2, c.dot(e2)), hi2 = std::max(hi2, c.dot(e2));
-            }
-            const double x1 = low.dot(e1), x2 = low.dot(e2);
-            if (std::abs(low.dot(up) - top) <= 0.01 * height && x1 >= lo1 && x1 <= hi1 && x2 >= lo2 && x2 <= hi2)
-                std::snprintf(why, sizeof why,
-                              "block %s rests on free block '%s': the rocking references stand it on a fixed base "
-                              "(name a block standing on a fixed block, or fix '%s')",
-                              d.name.c_str(), b.name.c_str(), b.name.c_str());
-        }
-    }
+    // the references rock the block on a fixed base: a free block under it (a column's lower drum)
+    // would move with the impacts
+    const BlockDef* under = why[0] ? nullptr : free_block_under(scene, d, up, axis);
+    if (under)
+        std::snprintf(why, sizeof why,
+                      "block %s rests on free block '%s': the rocking references stand it on a fixed base (name a "
+                      "block standing on a fixed block, or fix '%s')",
+                      d.name.c_str(), under->name.c_str(), under->name.c_str());
     if (why[0])
         throw Error(scene.source + ": reference.kind = \"" + kind + "\": " + why);
 }
