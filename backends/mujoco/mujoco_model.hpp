@@ -15,6 +15,7 @@ namespace cairn {
 struct MujocoParameters {
     double dt = 1e-4;                     ///< s
     std::string cone = "pyramidal";       ///< "pyramidal" or "elliptic"
+    std::string solver = "Newton";        ///< constraint solver: "Newton", "CG" or "PGS"
     int iterations = 100;                 ///< solver iterations
     int noslip_iterations = 0;            ///< iterations of the no-slip post-solver (0 = off)
     double tolerance = 1e-10;             ///< solver tolerance
