@@ -7,6 +7,7 @@
 #include <set>
 #include <sstream>
 
+#include "cases/case_util.hpp"
 #include "cases/scene_stack.hpp"
 #include "output/atomic_write.hpp"
 #include "report/case_replay.hpp"
@@ -111,6 +112,29 @@ std::string compliance_text(const std::vector<VariantHistories>& variants,
                 "; the cause may be the compliance or a row of \"What each engine could not represent\" below "
                 "(friction against twisting, for one).";
     return text;
+}
+
+/// the bullet on deformable blocks soft against their joints, when a dem variant runs them: the
+/// largest kn·h/E among the free blocks (docs/validation.md, "A flexible block rocking")
+std::string flexibility_text(const std::vector<VariantHistories>& variants, const Scene& scene) {
+    const bool deformable = std::any_of(variants.begin(), variants.end(), [](const VariantHistories& v) {
+        return v.run->variant.backend == "dem" && v.run->variant.model == "deformable";
+    });
+    if (!deformable) return {};
+    double most = 0.0;
+    std::string name;
+    for (size_t b = 0; b < scene.blocks.size(); ++b) {
+        if (scene.blocks[b].fixed) continue;
+        const double r = cases::joint_to_block_stiffness(scene, int(b));
+        if (r > most) most = r, name = scene.blocks[b].name;
+    }
+    if (most <= cases::kRigidAgainstJoints) return {};
+    return "Deformable against rigid blocks: block " + name + " is soft against its joints (kn·h/E = " +
+           number_text(most, 3) + ", above " + number_text(cases::kRigidAgainstJoints, 3) +
+           "): at each impact the deformable block vibrates and trades energy with its rocking, so after its first "
+           "impact dem-deformable may leave dem-rigid, as a flexible body does (docs/validation.md, \"A flexible "
+           "block rocking\"). The references of a block rocking freely (housner, winkler_rocking) judge it up "
+           "to its first impact only.";
 }
 
 /// false for a capability row the scene does not use (a damping it does not set, hexahedra it does
@@ -247,6 +271,8 @@ report::Document write_compare_report(const CaseResult& result, const CompareCon
     };
     const std::string compliance = compliance_text(variants, peaks_of, scene);
     if (!compliance.empty()) how.push_back(compliance);
+    const std::string flexibility = flexibility_text(variants, scene);
+    if (!flexibility.empty()) how.push_back(flexibility);
     d.bullets(how);
 
     report::Table diff{{"block", "variant", "position RMS (m)", "position diverged at (s)", "largest distance (m)",

@@ -65,6 +65,24 @@ std::vector<std::string> row(const std::string& csv, const std::string& a, const
 
 }  // namespace
 
+TEST_CASE("cairn compare says when deformable blocks are soft against their joints", "[app][compare]") {
+    // the column's drums at a tenth of their stiffness: kn·h/E = 3e8 · 0.4 / 3e9 = 0.04, past the
+    // 0.005 below which a deformable block rocks as the rigid one (docs/validation.md)
+    const fs::path dir = fresh_dir("compare_flexible");
+    {
+        std::ofstream f(dir / "column.toml");
+        f << kColumn;
+    }
+    const fs::path out = dir / "report";
+    const auto r = run_cairn("compare " + (dir / "column.toml").string() + " --backends dem --model both -q --out " +
+                                 out.string() + " --set materials.stone.young=3e9 --set run.duration=0.02",
+                             dir);
+    INFO(r.err);
+    REQUIRE(r.exit_code == 0);
+    CHECK_THAT(read_file(out / "report.md"),
+               Contains("Deformable against rigid blocks: block drum1 is soft against its joints (kn·h/E = 0.04,"));
+}
+
 TEST_CASE("cairn compare runs a column on dem and Bullet and writes the comparison report", "[app][compare]") {
     const fs::path dir = fresh_dir("compare");
     {
@@ -83,6 +101,8 @@ TEST_CASE("cairn compare runs a column on dem and Bullet and writes the comparis
                        Contains("## What each engine could not represent") && Contains("(#summary)"));
     // three free drums on each other: Bullet's iterative solver's creep is named (docs/backends.md)
     CHECK_THAT(md, Contains("| bullet | a structure held at rest | approximate |"));
+    // kn·h/E = 3e8 · 0.4 / 3e10 = 0.004: the deformable drums are rigid against their joints
+    CHECK_THAT(md, !Contains("Deformable against rigid blocks"));
     // per-variant histories with units in the header
     for (const char* v : {"dem-rigid", "bullet-rigid", "bullet-matched"}) {
         const std::string h = read_file(out / "data" / (std::string(v) + "_block1.csv"));
