@@ -257,7 +257,8 @@ void MujocoBackend::build(const Scene& scene, const RunOptions& options) {
           : stiff_step_ ? " (dt = auto: 1/omega of the stiffest matched spring, below the engine default 1e-4 s)"
                         : " (dt = auto: engine default 1e-4 s)");
     note(n);
-    n << "solver: " << p.solver << ", " << p.iterations << " iterations, tolerance " << p.tolerance << ", Euler integrator, "
+    n << "solver: " << p.solver << ", " << p.iterations << " iterations, tolerance " << p.tolerance
+      << ", Euler integrator, "
       << p.cone << " friction cone, margin 0, njmax " << p.njmax << ", nconmax " << p.nconmax;
     note(n);
     if (matched_)

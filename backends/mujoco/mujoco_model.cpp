@@ -40,7 +40,8 @@ std::string mujoco_xml(const Scene& scene, const std::vector<RigidBlock>& blocks
     x << "<mujoco model=\"cairn\">\n"
       << "<compiler angle=\"radian\" inertiafromgeom=\"false\" boundmass=\"0\" boundinertia=\"0\"/>\n"
       << "<option timestep=\"" << p.dt << "\" gravity=\"" << vec(scene.gravity) << "\" cone=\"" << p.cone
-      << "\" impratio=\"" << p.impratio << "\" integrator=\"Euler\" solver=\"" << p.solver << "\" iterations=\"" << p.iterations << "\" noslip_iterations=\"" << p.noslip_iterations << "\" tolerance=\"" << p.tolerance
+      << "\" impratio=\"" << p.impratio << "\" integrator=\"Euler\" solver=\"" << p.solver << "\" iterations=\""
+      << p.iterations << "\" noslip_iterations=\"" << p.noslip_iterations << "\" tolerance=\"" << p.tolerance
       << "\" density=\"0\" viscosity=\"0\"/>\n"
       << "<size njmax=\"" << p.njmax << "\" nconmax=\"" << p.nconmax << "\"/>\n";
     // mesh vertices relative to the centre of mass, block axes

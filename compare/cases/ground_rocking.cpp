@@ -304,7 +304,8 @@ std::vector<double> curve_any_world(const Scene& scene, ContactKind contact, con
 // kind "ground_rocking": rigid contact against Housner, dem's overlap contact against its Winkler base
 static const CaseKind& ground_rocking_kind() {
     static const FunctionKind k("ground_rocking", {}, analyse_any_world, curve_any_world, rigid_contact_only,
-                                "uplift (|θ| = 5 % of α)", [](const Scene& s) { check_ground(turned_scene(s, gravity_down(s))); });
+                                "uplift (|θ| = 5 % of α)",
+                                [](const Scene& s) { check_ground(turned_scene(s, gravity_down(s))); });
     return k;
 }
 

@@ -246,10 +246,13 @@ CaseAnalysis analyse_rocking(const Scene& scene, const std::vector<Sample>& s, C
         else if (model != Model::housner && ref_impacts.size() > 1 && !ref_amps.empty()) {
             const double ref_half = (ref_impacts[1] - ref_impacts[0]) * housner_half /
                                     (2.0 * hb.first_impact(std::min(ref_amps[0], 0.999 * a)));
-            if (!flexible.empty()) out.metrics.push_back(info("half cycle (1st to 2nd impact)", "s", half, ref_half, flexible));
-            else out.metrics.push_back(relative("half cycle (1st to 2nd impact)", "s", half, ref_half, tol,
-                                           "the " + out.analytic_key + "'s half cycle " + std::to_string(ref_impacts[1] - ref_impacts[0]) +
-                                               " s, carried to the measured θ1 by Housner's 2 t1(θ1); " + why));
+            if (!flexible.empty())
+                out.metrics.push_back(info("half cycle (1st to 2nd impact)", "s", half, ref_half, flexible));
+            else
+                out.metrics.push_back(relative("half cycle (1st to 2nd impact)", "s", half, ref_half, tol,
+                                               "the " + out.analytic_key + "'s half cycle " +
+                                                   std::to_string(ref_impacts[1] - ref_impacts[0]) +
+                                                   " s, carried to the measured θ1 by Housner's 2 t1(θ1); " + why));
         } else if (!flexible.empty())
             out.metrics.push_back(info("half cycle (1st to 2nd impact)", "s", half, housner_half, flexible));
         else

@@ -166,7 +166,8 @@ static const CaseKind& rolling_kind() {
             const Quat r = slope_frame(s);
             return analyse_rolling(turned_scene(s, r), turned_samples(run, r), c);
         },
-        nullptr, rigid_contact_only, "first face crossed", [](const Scene& s) { check_rolling(turned_scene(s, slope_frame(s))); });
+        nullptr, rigid_contact_only, "first face crossed",
+        [](const Scene& s) { check_rolling(turned_scene(s, slope_frame(s))); });
     return k;
 }
 

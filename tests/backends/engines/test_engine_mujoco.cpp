@@ -15,8 +15,9 @@ TEST_CASE("mujoco: Newton and CG both rock reading B as Housner's block, and the
     const auto names = engine_names();
     if (std::find(names.begin(), names.end(), "mujoco") == names.end()) return;   // not built in
     for (const char* solver : {"Newton", "CG"}) {
-        const Scene s = parse_scene(shipped_scene_text("paper/rocking.toml") + "\n[backends.mujoco]\nsolver = \"" + solver + "\"\n",
-                                    "<rocking, " + std::string(solver) + ">");
+        const std::string text =
+            shipped_scene_text("paper/rocking.toml") + "\n[backends.mujoco]\nsolver = \"" + solver + "\"\n";
+        const Scene s = parse_scene(text, "<rocking, " + std::string(solver) + ">");
         INFO(solver);
         const auto run = sampled_run("mujoco", s, "rigid", 1e-4);
         // Housner's first impact and half cycle within 1 %, amplitudes within 2 % (the rigid
@@ -28,6 +29,8 @@ TEST_CASE("mujoco: Newton and CG both rock reading B as Housner's block, and the
                           [&](const std::string& n) { return n.rfind("solver: " + std::string(solver) + ",", 0) == 0; }));
     }
     // a solver MuJoCo does not have is refused by name
-    const Scene bad = parse_scene(shipped_scene_text("paper/rocking.toml") + "\n[backends.mujoco]\nsolver = \"cg\"\n", "<bad>");
-    CHECK_THROWS_WITH(build_backend("mujoco", bad, "rigid"), Catch::Contains("solver") && Catch::Contains("Newton, CG, PGS"));
+    const Scene bad =
+        parse_scene(shipped_scene_text("paper/rocking.toml") + "\n[backends.mujoco]\nsolver = \"cg\"\n", "<bad>");
+    CHECK_THROWS_WITH(build_backend("mujoco", bad, "rigid"),
+                      Catch::Contains("solver") && Catch::Contains("Newton, CG, PGS"));
 }
