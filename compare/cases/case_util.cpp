@@ -248,15 +248,23 @@ Quat gravity_down(const Scene& scene) {
     return Quat::FromTwoVectors(g, -Vec3::UnitZ());
 }
 
+namespace {
+
+/// a block's place, orientation and speeds (a BlockDef at t = 0 or a sampled BlockState) turned by r
+template <class Body>
+void turn_body(Body& b, const Quat& r) {
+    b.position = r * b.position;
+    b.orientation = (r * b.orientation).normalized();
+    b.velocity = r * b.velocity;
+    b.angular_velocity = r * b.angular_velocity;
+}
+
+}  // namespace
+
 Scene turned_scene(const Scene& scene, const Quat& r) {
     Scene out = scene;
     out.gravity = r * scene.gravity;
-    for (auto& b : out.blocks) {
-        b.position = r * b.position;
-        b.orientation = (r * b.orientation).normalized();
-        b.velocity = r * b.velocity;
-        b.angular_velocity = r * b.angular_velocity;
-    }
+    for (auto& b : out.blocks) turn_body(b, r);
     for (auto& l : out.loads) l.force = r * l.force;
     if (out.ground_motion)
         for (auto& c : out.ground_motion->components) c.direction = r * c.direction;
@@ -267,12 +275,7 @@ std::vector<Sample> turned_samples(const std::vector<Sample>& s, const Quat& r) 
     std::vector<Sample> out = s;
     for (auto& x : out) {
         for (auto& p : x.probes) p = r * p;
-        for (auto& b : x.blocks) {
-            b.position = r * b.position;
-            b.orientation = (r * b.orientation).normalized();
-            b.velocity = r * b.velocity;
-            b.angular_velocity = r * b.angular_velocity;
-        }
+        for (auto& b : x.blocks) turn_body(b, r);
     }
     return out;
 }

@@ -101,30 +101,38 @@ CaseAnalysis analyse_rolling(const Scene& scene, const std::vector<Sample>& s, C
     return r;
 }
 
-/// the outward normal (world) of the first fixed block's face that faces most upward (+z), or zero
-/// when the scene has no fixed block
-Vec3 top_normal(const Scene& scene) {
-    for (const auto& b : scene.blocks) {
-        if (!b.fixed) continue;
-        const Corners w = placed_corners(b.corners, b.position, b.orientation);
-        const Vec3 centre = mass_properties(w, 1.0).centre;
-        Vec3 best = Vec3::Zero();
-        for (const auto& f : kFaceCorners) {
-            const Vec3 &c0 = w[size_t(f[0])], &c1 = w[size_t(f[1])], &c2 = w[size_t(f[2])], &c3 = w[size_t(f[3])];
-            Vec3 n = (c2 - c0).cross(c3 - c1).normalized();
-            if (n.dot(c0 - centre) < 0) n = -n;   // outward
-            if (n.z() > best.z()) best = n;
-        }
-        return best;
+/// the scene's first fixed block (the slope), or nullptr
+const BlockDef* first_fixed(const Scene& scene) {
+    for (const auto& b : scene.blocks)
+        if (b.fixed) return &b;
+    return nullptr;
+}
+
+/// the outward normal (world) of the face of block b that faces most upward (+z)
+Vec3 top_normal(const BlockDef& b) {
+    const Corners w = placed_corners(b.corners, b.position, b.orientation);
+    const Vec3 centre = mass_properties(w, 1.0).centre;
+    Vec3 best = Vec3::Zero();
+    for (const auto& f : kFaceCorners) {
+        const Vec3 &c0 = w[size_t(f[0])], &c1 = w[size_t(f[1])], &c2 = w[size_t(f[2])], &c3 = w[size_t(f[3])];
+        Vec3 n = (c2 - c0).cross(c3 - c1).normalized();
+        if (n.dot(c0 - centre) < 0) n = -n;   // outward
+        if (n.z() > best.z()) best = n;
     }
-    return Vec3::Zero();
+    return best;
 }
 
 /// the turn (world) that brings gravity onto −z and then the slope's fall line onto +x: the frame
 /// the rolling oracle works in
 Quat slope_frame(const Scene& scene) {
     const Quat down = gravity_down(scene);
-    const Vec3 n = top_normal(turned_scene(scene, down));
+    const BlockDef* slope = first_fixed(scene);
+    if (!slope) return down;
+    // the slope's face most upward once gravity runs along −z
+    BlockDef turned = *slope;
+    turned.position = down * turned.position;
+    turned.orientation = down * turned.orientation;
+    const Vec3 n = top_normal(turned);
     if (std::hypot(n.x(), n.y()) < 1e-9) return down;   // a level base: no fall line
     return Quat(Eigen::AngleAxisd(-std::atan2(n.y(), n.x()), Vec3::UnitZ())) * down;
 }
@@ -137,23 +145,19 @@ Quat slope_frame(const Scene& scene) {
 static void check_rolling(const Scene& scene) {
     require_drive_modelled(scene, "rolling", {false, true});
     const std::string head = scene.source + ": reference.kind = \"rolling\": ";
-    for (const auto& b : scene.blocks) {
-        if (!b.fixed) continue;
-        const Vec3 best = top_normal(scene);
-        const double slope = scene.reference->values.at("slope");
-        // the frame turned the fall line onto +x: only the slope's angle is left to match
-        const double inclined = std::acos(std::clamp(best.z(), -1.0, 1.0));
-        if (std::abs(inclined - slope) > 1e-3) {
-            char why[300];
-            std::snprintf(why, sizeof why,
-                          "the top face of fixed block %s is inclined %.5g rad against gravity, not slope = %.5g rad; "
-                          "the rolling reference follows the block down that plane",
-                          b.name.c_str(), inclined, slope);
-            throw Error(head + why);
-        }
-        return;
+    const BlockDef* b = first_fixed(scene);
+    if (!b) throw Error(head + "no fixed block to roll down");
+    const double slope = scene.reference->values.at("slope");
+    // the frame turned the fall line onto +x: only the slope's angle is left to match
+    const double inclined = std::acos(std::clamp(top_normal(*b).z(), -1.0, 1.0));
+    if (std::abs(inclined - slope) > 1e-3) {
+        char why[300];
+        std::snprintf(why, sizeof why,
+                      "the top face of fixed block %s is inclined %.5g rad against gravity, not slope = %.5g rad; the "
+                      "rolling reference follows the block down that plane",
+                      b->name.c_str(), inclined, slope);
+        throw Error(head + why);
     }
-    throw Error(head + "no fixed block to roll down");
 }
 
 // kind "rolling" (d): coarse oracles, no reference curve

@@ -48,6 +48,12 @@ position = [0.0, 0.0, 1.0]
 material = "stone"
 )";
 
+/// `text` written to dir/name; returns its path
+fs::path write_scene(const fs::path& dir, const std::string& name, const std::string& text) {
+    std::ofstream(dir / name) << text;
+    return dir / name;
+}
+
 /// the row of a CSV whose first two fields are `a`,`b`, split
 std::vector<std::string> row(const std::string& csv, const std::string& a, const std::string& b) {
     std::istringstream in(csv);
@@ -69,12 +75,8 @@ TEST_CASE("cairn compare says when deformable blocks are soft against their join
     // the column's drums at a tenth of their stiffness: kn·h/E = 3e8 · 0.4 / 3e9 = 0.04, past the
     // 0.005 below which a deformable block rocks as the rigid one (docs/validation.md)
     const fs::path dir = fresh_dir("compare_flexible");
-    {
-        std::ofstream f(dir / "column.toml");
-        f << kColumn;
-    }
-    const fs::path out = dir / "report";
-    const auto r = run_cairn("compare " + (dir / "column.toml").string() + " --backends dem --model both -q --out " +
+    const fs::path scene = write_scene(dir, "column.toml", kColumn), out = dir / "report";
+    const auto r = run_cairn("compare " + scene.string() + " --backends dem --model both -q --out " +
                                  out.string() + " --set materials.stone.young=3e9 --set run.duration=0.02",
                              dir);
     INFO(r.err);
@@ -85,12 +87,8 @@ TEST_CASE("cairn compare says when deformable blocks are soft against their join
 
 TEST_CASE("cairn compare runs a column on dem and Bullet and writes the comparison report", "[app][compare]") {
     const fs::path dir = fresh_dir("compare");
-    {
-        std::ofstream f(dir / "column.toml");
-        f << kColumn;
-    }
-    const fs::path out = dir / "report";
-    const auto r = run_cairn("compare " + (dir / "column.toml").string() + " --backends dem,bullet --jobs 2 --out " +
+    const fs::path scene = write_scene(dir, "column.toml", kColumn), out = dir / "report";
+    const auto r = run_cairn("compare " + scene.string() + " --backends dem,bullet --jobs 2 --out " +
                                  out.string(), dir);
     INFO(r.err);
     REQUIRE(r.exit_code == 0);
@@ -153,11 +151,9 @@ TEST_CASE("cairn compare says how much dem's joints lower a shaken stack's overt
     // the column of kColumn shaken along x: B/H = 0.4/1.2 about its base edge, which a joint of
     // springs kn reaches only as it opens while the column leans (docs/validation.md)
     const fs::path dir = fresh_dir("compare_stack");
-    {
-        std::ofstream f(dir / "column.toml");
-        f << kColumn << "[ground_motion]\ntime = [0.0, 0.3]\nacceleration = [0.0, 0.5]\n";
-    }
-    const auto r = run_cairn("compare " + (dir / "column.toml").string() + " --backends dem,bullet --jobs 2 --out " +
+    const std::string motion = "[ground_motion]\ntime = [0.0, 0.3]\nacceleration = [0.0, 0.5]\n";
+    const fs::path shaken = write_scene(dir, "column.toml", kColumn + motion);
+    const auto r = run_cairn("compare " + shaken.string() + " --backends dem,bullet --jobs 2 --out " +
                                  (dir / "report").string(), dir);
     INFO(r.err);
     REQUIRE(r.exit_code == 0);
@@ -165,11 +161,7 @@ TEST_CASE("cairn compare says how much dem's joints lower a shaken stack's overt
     CHECK_THAT(md, Contains("For this stack of 3 layers under the ground motion, joints of kn = 3e+08 N/m³ alone lower "
                             "the quasi-static overturning multiplier a/g from 0.3333 (rigid) to 0."));
     // without the ground motion (the first test's column) there is no such sentence
-    const fs::path plain = dir / "plain.toml";
-    {
-        std::ofstream f(plain);
-        f << kColumn;
-    }
+    const fs::path plain = write_scene(dir, "plain.toml", kColumn);
     const auto q = run_cairn("compare " + plain.string() + " --backends dem,bullet --jobs 2 --out " + (dir / "plain").string(), dir);
     REQUIRE(q.exit_code == 0);
     CHECK_THAT(read_file(dir / "plain" / "report.md"), !Contains("For this stack"));
@@ -230,10 +222,7 @@ TEST_CASE("cairn compare on a scene with a reference adds the verdicts and the a
 
 TEST_CASE("cairn compare writes the same numbers for one run at a time and for two", "[app][compare]") {
     const fs::path dir = fresh_dir("compare_jobs");
-    {
-        std::ofstream f(dir / "column.toml");
-        f << kColumn;
-    }
+    write_scene(dir, "column.toml", kColumn);
     // one at a time, dem uses every OpenMP thread; two at a time, one thread each
     for (const char* jobs : {"1", "2"}) {
         const auto r = run_cairn("compare " + (dir / "column.toml").string() + " --backends dem --set run.duration=0.1 --jobs " +
