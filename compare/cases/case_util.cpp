@@ -157,6 +157,17 @@ const BlockDef* free_block_under(const Scene& scene, const BlockDef& d, const Ve
     return nullptr;
 }
 
+/// another free block that touches block d (their gap within 1 % of d's height: a block standing
+/// on it, leaning on it or beside it), or nullptr
+const BlockDef* free_block_touching(const Scene& scene, const BlockDef& d) {
+    const Corners w = placed_corners(d.corners, d.position, d.orientation);
+    const double height = (w[4] - w[0]).norm();
+    for (const auto& b : scene.blocks)
+        if (!b.fixed && &b != &d && overlap_depth(w, placed_corners(b.corners, b.position, b.orientation)) > -0.01 * height)
+            return &b;
+    return nullptr;
+}
+
 }  // namespace
 
 void require_tilted_release(const Scene& scene, const std::string& kind) {
@@ -183,6 +194,13 @@ void require_tilted_release(const Scene& scene, const std::string& kind) {
                       "block %s rests on free block '%s': the rocking references stand it on a fixed base (name a "
                       "block standing on a fixed block, or fix '%s')",
                       d.name.c_str(), under->name.c_str(), under->name.c_str());
+    // nor anything on it or beside it: a block on its top rocks with it and then on it
+    const BlockDef* touching = why[0] ? nullptr : free_block_touching(scene, d);
+    if (touching)
+        std::snprintf(why, sizeof why,
+                      "block %s touches free block '%s': the rocking references rock one block alone on a fixed base "
+                      "(leave out [reference] to compare the engines with each other, or fix '%s')",
+                      d.name.c_str(), touching->name.c_str(), touching->name.c_str());
     if (why[0])
         throw Error(scene.source + ": reference.kind = \"" + kind + "\": " + why);
 }

@@ -54,7 +54,7 @@ Vec3 rocking_axis(const Scene& scene);
 Vec3 rocking_axis_block(const Scene& scene);
 /// refuses a tilted release (housner, winkler_rocking) the oracle does not describe, naming the
 /// kind: a rocking axis off the horizontal, or a block whose frame z does not lean θ0 from the
-/// vertical about that axis (1e-3 rad)
+/// vertical about that axis (1e-3 rad), a block on a free block, or one touched by another free block
 void require_tilted_release(const Scene& scene, const std::string& kind);
 /// Housner's block of the reference block: half-width across the rocking axis and half-height,
 /// from its corners in the block frame

@@ -499,6 +499,18 @@ TEST_CASE("rocking references: a block turned about the vertical rocks as it doe
         CHECK_THROWS_WITH(cases::case_kind(k, plinth.source).check(plinth), Catch::Contains("rests on free block 'P'"));
         plinth.blocks.back().fixed = true;
         CHECK_NOTHROW(cases::case_kind(k, plinth.source).check(plinth));
+        // nor a block carrying another: a copy of it stacked on its top, tilted with it, is refused
+        // (every engine rocked the stack of two 0.4 x 0.4 x 1 m blocks as one 2 m block, its first
+        // impact 120 % later than the lone block's), the same copy 5 m aside is taken
+        Scene stack = plain;
+        stack.reference->kind = k;
+        BlockDef top = stack.blocks.at(size_t(stack.reference->block));
+        top.name = "T";
+        top.position += top.orientation * Vec3(0.0, 0.0, top.size.z());
+        stack.blocks.push_back(top);
+        CHECK_THROWS_WITH(cases::case_kind(k, stack.source).check(stack), Catch::Contains("touches free block 'T'"));
+        stack.blocks.back().position.y() += 5.0;
+        CHECK_NOTHROW(cases::case_kind(k, stack.source).check(stack));
     }
     // the rolling oracle follows the block down its plane: a slope value other than its plane's is
     // refused; the scene turned about the vertical, or whole into a Y-up world, is taken
