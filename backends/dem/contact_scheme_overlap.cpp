@@ -157,11 +157,13 @@ void ContactSet::evaluate_overlap(std::vector<Block>& blocks, double dt, long be
                     }
                     if (missed_by(face_cons.data(), face_cons.data() + nf)) continue;
                     const bool split = hb.deformable != nullptr;
+                    // one cell is its face: clip() tests its corners as the masks would
+                    const bool masks = !split && n > 1;
                     for (int a = 0; a < nrules; ++a) {
                         SideRule& r = rules[size_t(a)];
                         r.count = r.side_count;
                         for (int k = 0; k < nf; ++k) r.cons[size_t(r.count++)] = face_cons[size_t(k)];
-                        if (split || !r.live) continue;
+                        if (!masks || !r.live) continue;
                         uint32_t* in = corner_in[size_t(a)].data();
                         uint32_t* out = corner_out[size_t(a)].data();
                         const int corners = (n + 1) * (n + 1);
@@ -255,7 +257,7 @@ void ContactSet::evaluate_overlap(std::vector<Block>& blocks, double dt, long be
                                     // all its corners (those before leave it as it is), and is
                                     // empty if all its corners miss that one: clip()'s very result
                                     int first = 0;
-                                    if (!split && poly.n > 0) {
+                                    if (masks && poly.n > 0) {
                                         uint32_t in = ~0u, out = ~0u;
                                         for (int i : corner) in &= corner_in[size_t(a)][size_t(i)], out &= corner_out[size_t(a)][size_t(i)];
                                         while (first < r.count && ((in >> first) & 1u)) ++first;
