@@ -45,11 +45,11 @@ std::string flexible_block_reason(const Scene& scene, int b, bool deformable, do
     if (r <= limit) return "";
     char buf[320];
     std::snprintf(buf, sizeof buf,
-                  "not judged: the deformable block is compliant against its joints (kn·h/E = %.3g, above %.3g): its "
-                  "vibration takes and gives back rocking energy, which the rigid-block references leave out "
-                  "(docs/validation.md, \"A flexible block rocking\")",
+                  " is compliant against its joints (kn·h/E = %.3g, above %.3g): its vibration takes and gives back "
+                  "rocking energy, which the rigid-block references leave out (docs/validation.md, \"A flexible block "
+                  "rocking\")",
                   r, limit);
-    return buf;
+    return "not judged: the deformable block " + scene.blocks.at(size_t(b)).name + buf;
 }
 
 int free_index(const Scene& scene, int block) {

@@ -9,6 +9,7 @@
 #include <limits>
 
 #include "analytic/rocking_oracle.hpp"
+#include "analytic/winkler_frame.hpp"
 #include "cases/case_kind.hpp"
 #include "cases/case_util.hpp"
 #include "cases/ground_rocking_setup.hpp"
@@ -35,10 +36,15 @@ std::string housner_unmodelled(const Scene& scene, const GroundSetup& s) {
 
 /// why the Winkler block does not model a penalty run, or empty
 std::string penalty_unmodelled(const Scene& scene, ContactKind contact, const GroundSetup& s) {
-    if (s.columns > 1)
-        return "a frame of " + std::to_string(s.columns) + " columns under '" + s.beam +
-               "' on compliant joints: the Winkler oracle models one block (the rigid frame's curve is a guide only)";
-    return winkler_unmodelled(scene, contact, s.axis_block);
+    const std::string why = winkler_unmodelled(scene, contact, s.axis_block);
+    if (!why.empty() || s.columns == 1) return why;
+    const auto w = winkler_model(scene, contact, s.axis_block);
+    const int cells = s.columns * (2 * w.cells_across + 2 * w.cells_up);
+    if (s.columns > 8 || cells > oracle::WinklerFrame::max_cells)
+        return "a frame of " + std::to_string(s.columns) + " columns under '" + s.beam + "' cut into " +
+               std::to_string(cells) + " contact cells: the Winkler frame models up to 8 columns and " +
+               std::to_string(oracle::WinklerFrame::max_cells) + " cells";
+    return "";
 }
 
 /// what a rotation history did, read the same way from a run and from an oracle's curve
@@ -207,9 +213,13 @@ CaseAnalysis analyse_ground(const Scene& scene, const std::vector<Sample>& sampl
     const bool winkler = contact.penalty;
     if (winkler) {
         out.analytic = ground_winkler(scene, contact, s, t);
-        out.analytic_key = "Winkler base";
-        out.analytic_label = "rigid block on a no-tension Winkler base of modulus kn under the same drive (dem's shear "
-                             "springs and dashpots per sub-contact), integrated independently";
+        out.analytic_key = s.columns > 1 ? "Winkler frame" : "Winkler base";
+        out.analytic_label =
+            s.columns > 1 ? "the frame's rigid columns and beam on no-tension Winkler joints of modulus kn (base and "
+                            "column tops) under the same drive (dem's shear springs and dashpots per sub-contact), "
+                            "integrated independently"
+                          : "rigid block on a no-tension Winkler base of modulus kn under the same drive (dem's shear "
+                            "springs and dashpots per sub-contact), integrated independently";
     } else {
         out.analytic = ground_housner(scene, s, t, -1.0).theta;
         out.analytic_key = "Housner";
@@ -220,13 +230,18 @@ CaseAnalysis analyse_ground(const Scene& scene, const std::vector<Sample>& sampl
     const Response ref = read_response(ref_curve, mark, s.alpha);
     const Trust trust = trust_of(scene, contact, s, ref_curve, ref.overturned);
     // a deformable block far softer than a rigid one against its joints rocks as a flexible body
-    const std::string flexible = flexible_block_reason(scene, scene.reference->block, contact.deformable, kRigidUnderDrive);
+    std::string flexible = flexible_block_reason(scene, scene.reference->block, contact.deformable, kRigidUnderDrive);
+    if (s.columns > 1 && contact.deformable)   // a frame: its softest member
+        for (size_t b = 0; b < scene.blocks.size() && flexible.empty(); ++b)
+            if (!scene.blocks[b].fixed) flexible = flexible_block_reason(scene, int(b), true, kFrameRigidUnderDrive);
     if (!flexible.empty()) {
         out.metrics.push_back(info("largest rotation", "rad", run.largest, ref.largest, flexible));
         return out;
     }
     const char* slop = " (rigid-contact engines: their step and contact slop)";
-    const std::string model = winkler         ? "the Winkler base (dem's contact law, integrated independently)"
+    const std::string model = winkler ? (s.columns > 1 ? "the frame on Winkler joints (dem's contact law, integrated "
+                                                         "independently)"
+                                                       : "the Winkler base (dem's contact law, integrated independently)")
                               : s.columns > 1 ? std::string("the rigid frame of Makris & Vassiliou") + slop
                                               : std::string("Housner's rigid block") + slop;
     const double t_tol = time_tolerance(scene, s);
@@ -268,7 +283,9 @@ CaseAnalysis analyse_ground(const Scene& scene, const std::vector<Sample>& sampl
     }
     const double said = ref.overturned ? 1.0 : 0.0, did = run.overturned ? 1.0 : 0.0;
     const char* rule = "overturned: |θ| reached π/3, or ended beyond α";
-    const char* as = winkler ? "as the Winkler base; " : s.columns > 1 ? "as the rigid frame; " : "as Housner's block; ";
+    const char* as = winkler ? (s.columns > 1 ? "as the frame on Winkler joints; " : "as the Winkler base; ")
+                       : s.columns > 1 ? "as the rigid frame; "
+                                       : "as Housner's block; ";
     const std::string verdict_basis = as + std::string(rule);
     if (!winkler && scene.contact.restitution > 0.0)
         out.metrics.push_back(info("overturns (1 yes, 0 no)", "", did, said,

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdio>
 
+#include "analytic/winkler_frame.hpp"
 #include "cases/case_util.hpp"
 #include "cases/winkler_model.hpp"
 #include "error.hpp"
@@ -274,6 +275,14 @@ void read_frame(const Scene& scene, const BlockDef& d, GroundSetup& out) {
     }
     out.columns = int(columns.size());
     out.beam = cap.name;
+    auto centre = [&](const BlockDef& b) { return Vec3(b.position + b.orientation * mass_properties(b.corners, 1.0).centre); };
+    const Vec3 origin = centre(d);
+    for (int c : columns) out.column_x.push_back((centre(scene.blocks[size_t(c)]) - origin).dot(across));
+    out.beam_x = (centre(cap) - origin).dot(across);
+    out.beam_length = extent_along(cap, across);
+    out.beam_depth = extent_along(cap, out.axis);
+    out.beam_height = heights(cap).second - heights(cap).first;
+    out.beam_mass = block_mass(scene, beam);
     out.gamma = block_mass(scene, beam) / (double(out.columns) * m_column);
     // Makris & Vassiliou (2013), checked by hand in docs/validation.md: the beam translates by
     // 2R[sin α − sin(α − θ)] and rises by 2R[cos(α − θ) − cos α], so its mass adds 4R²m_b to
@@ -369,7 +378,20 @@ std::vector<double> ground_winkler(const Scene& scene, ContactKind contact, cons
         const Vec3 f = drive(x);
         return std::array<double, 2>{k * f.dot(dir), f.z()};
     };
-    const auto tr = w.rest(t.back() + 1e-9, std::min(1e-3, t.size() > 1 ? t[1] - t[0] : 1e-3));
+    const double duration = t.back() + 1e-9, sample = std::min(1e-3, t.size() > 1 ? t[1] - t[0] : 1e-3);
+    oracle::WinklerTrace tr;
+    if (s.columns > 1) {
+        // the frame: every column as the block, the beam on their tops
+        oracle::WinklerFrame f{w.width, w.height, w.depth, w.mass, s.column_x, s.beam_length, s.beam_height,
+                               s.beam_depth, s.beam_mass, s.beam_x, w.g, w.kn};
+        f.ks = w.ks, f.mu = w.mu, f.zeta = w.zeta;
+        f.cells_across = w.cells_across, f.cells_up = w.cells_up;
+        f.steps_per_period = w.steps_per_period;
+        f.drive = w.drive;
+        tr = f.rest(duration, sample);
+    } else {
+        tr = w.rest(duration, sample);
+    }
     const metrics::Series theta{tr.t, tr.theta};
     std::vector<double> out;
     out.reserve(t.size());

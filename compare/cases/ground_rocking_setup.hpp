@@ -31,6 +31,10 @@ struct GroundSetup {
     double gamma = 0.0;                  ///< m_beam / (N m_column) (frame)
     double p2_factor = 1.0;              ///< p̂²/p² = (1 + 2γ)/(1 + 3γ): the frame rocks as its column, slower
     double ratio = -1.0;                 ///< the frame's impact ratio (1 − 1.5 sin²α + 3γ cos 2α)/(1 + 3γ); < 0: Housner's
+    std::vector<double> column_x;        ///< m: each column's centre along dir from the block's, the block's (0) first (frame)
+    double beam_x = 0.0;                 ///< m: the beam's centre along dir from the block's (frame)
+    double beam_length = 0.0, beam_height = 0.0, beam_depth = 0.0;   ///< m: along dir, up, along the axis (frame)
+    double beam_mass = 0.0;              ///< kg (frame)
 };
 
 /// the scene as the oracles see it; throws cairn::Error naming the key of what they cannot model
@@ -52,7 +56,8 @@ double ground_ratio(const Scene& scene, const GroundSetup& s);
 /// Housner's block (or frame) under the scene's drive at the times t, with impact ratio r (< 0: its own)
 oracle::RockingResult ground_housner(const Scene& scene, const GroundSetup& s, const std::vector<double>& t, double r);
 
-/// the Winkler block of dem's contact under the same drive, θ at the times t
+/// the Winkler block of dem's contact (for a frame, its columns and beam on Winkler joints) under
+/// the same drive, θ at the times t
 std::vector<double> ground_winkler(const Scene& scene, ContactKind contact, const GroundSetup& s, const std::vector<double>& t);
 
 }  // namespace cairn::cases
