@@ -51,84 +51,85 @@ struct CellLoad {
     double power = 0;           // rate of dissipation of the dashpots, W
 };
 
-}  // namespace
+// the assembly as the integrator takes it: its bodies at rest and its contact cells
+struct Model {
+    std::vector<double> m, inertia, x0, z0;   // kg, kg·m², the centres at rest (m)
+    std::vector<Cell> cells;
+    double omega2 = 0.0;                       // bound on the stiffest contact mode's ω², 1/s²
+    int traced = 0;                            // the body whose θ and centre the trace records
+};
 
-WinklerTrace WinklerFrame::rest(double duration, double sample_dt) const {
-    auto bad = [](const std::string& what, double v) {
-        throw Error("Winkler frame: " + what + " = " + std::to_string(v) + " is out of range");
+// the joints' law and the run's settings
+struct Law {
+    const char* who;
+    double g, kn, ks, mu, zeta, steps_per_period;
+    const std::function<std::array<double, 2>(double)>* drive;
+};
+
+// the target face of a cell on a body (its centre, outward normal and half-length in that body's
+// frame); none: the ground's top
+struct TargetFace {
+    double centre[2], normal[2], half;
+};
+
+// a face of body `hit` from p0 to p1 (its frame; outward normal (nx, nz)) cut into `count` equal
+// cells against body `target`'s face `tf` (−1: the ground's top); `face_area` the whole hitting
+// face's (m², for the dashpots, as dem's), `joint_depth` the joint's extent along the axis (m)
+void add_face(Model& md, const Law& law, int hit, int target, const TargetFace* tf, const double* p0, const double* p1,
+              double nx, double nz, double face_area, int count, double joint_depth) {
+    // dem's dashpots: the pair's reduced mass (the ground's is infinite) over the hitting side's area
+    const double mh = md.m[size_t(hit)];
+    const double mr = target < 0 ? mh : mh * md.m[size_t(target)] / (mh + md.m[size_t(target)]);
+    for (int i = 0; i < count; ++i) {
+        const double f0 = double(i) / count, f1 = double(i + 1) / count;
+        Cell c;
+        c.hit = hit;
+        c.target = target;
+        c.a[0] = p0[0] + f0 * (p1[0] - p0[0]), c.a[1] = p0[1] + f0 * (p1[1] - p0[1]);
+        c.b[0] = p0[0] + f1 * (p1[0] - p0[0]), c.b[1] = p0[1] + f1 * (p1[1] - p0[1]);
+        c.n[0] = nx, c.n[1] = nz;
+        c.depth = joint_depth;
+        c.cn = 2.0 * law.zeta * std::sqrt(law.kn * mr / face_area);
+        c.ct = 2.0 * law.zeta * std::sqrt(law.ks * mr / face_area);
+        if (tf) {
+            c.t_centre[0] = tf->centre[0], c.t_centre[1] = tf->centre[1];
+            c.t_normal[0] = tf->normal[0], c.t_normal[1] = tf->normal[1];
+            c.t_half = tf->half;
+        }
+        md.cells.push_back(c);
+    }
+}
+
+// the common checks of both assemblies' law and run
+void check_law(const Law& law, double duration, double sample_dt) {
+    auto bad = [&](const std::string& what, double v) {
+        throw Error(std::string(law.who) + ": " + what + " = " + std::to_string(v) + " is out of range");
     };
-    for (auto [name, v] : {std::pair<const char*, double>{"width", width}, {"height", height}, {"depth", depth},
-                           {"mass", mass}, {"beam_length", beam_length}, {"beam_height", beam_height},
-                           {"beam_depth", beam_depth}, {"beam_mass", beam_mass}, {"kn", kn}})
-        if (!(v > 0)) bad(name, v);
-    if (!(g >= 0)) bad("g", g);
-    if (!(ks >= 0)) bad("ks", ks);
-    if (!(mu >= 0)) bad("mu", mu);
-    if (!(zeta >= 0)) bad("zeta", zeta);
+    if (!(law.g >= 0)) bad("g", law.g);
+    if (!(law.kn > 0)) bad("kn", law.kn);
+    if (!(law.ks >= 0)) bad("ks", law.ks);
+    if (!(law.mu >= 0)) bad("mu", law.mu);
+    if (!(law.zeta >= 0)) bad("zeta", law.zeta);
     if (!(duration > 0)) bad("duration", duration);
     if (!(sample_dt > 0)) bad("sample_dt", sample_dt);
-    if (!(steps_per_period >= 10)) bad("steps_per_period", steps_per_period);
-    if (column_x.size() < 2 || column_x.size() > 8) bad("columns", double(column_x.size()));
-    const int columns = int(column_x.size());
-    if (cells_across < 1 || cells_up < 1 || columns * (2 * cells_across + 2 * cells_up) > max_cells)
-        bad("cells", double(columns * (2 * cells_across + 2 * cells_up)));
+    if (!(law.steps_per_period >= 10)) bad("steps_per_period", law.steps_per_period);
+}
 
-    const int bodies = columns + 1, beam = columns;
-    const double b = 0.5 * width, hh = 0.5 * height;
-    std::vector<double> m(size_t(bodies), mass), inertia(size_t(bodies), mass * (width * width + height * height) / 12.0);
-    m[size_t(beam)] = beam_mass;
-    inertia[size_t(beam)] = beam_mass * (beam_length * beam_length + beam_height * beam_height) / 12.0;
-
-    // each column's lower faces (bottom, +x side, −x side) on the ground, and its top under the
-    // beam's bottom face, each cut into equal cells
-    std::vector<Cell> cells;
-    auto add_face = [&](int hit, int target, const double* p0, const double* p1, double nx, double nz, double face_area,
-                        int count, double joint_depth) {
-        for (int i = 0; i < count; ++i) {
-            const double f0 = double(i) / count, f1 = double(i + 1) / count;
-            Cell c;
-            c.hit = hit;
-            c.target = target;
-            c.a[0] = p0[0] + f0 * (p1[0] - p0[0]), c.a[1] = p0[1] + f0 * (p1[1] - p0[1]);
-            c.b[0] = p0[0] + f1 * (p1[0] - p0[0]), c.b[1] = p0[1] + f1 * (p1[1] - p0[1]);
-            c.n[0] = nx, c.n[1] = nz;
-            c.depth = joint_depth;
-            // dem's: the pair's reduced mass (the ground's is infinite) over the hitting side's area
-            const double mr = target < 0 ? m[size_t(hit)] : m[size_t(hit)] * m[size_t(target)] / (m[size_t(hit)] + m[size_t(target)]);
-            c.cn = 2.0 * zeta * std::sqrt(kn * mr / face_area);
-            c.ct = 2.0 * zeta * std::sqrt(ks * mr / face_area);
-            if (target == beam) {   // the beam's bottom face
-                c.t_centre[0] = 0.0, c.t_centre[1] = -0.5 * beam_height;
-                c.t_normal[0] = 0.0, c.t_normal[1] = -1.0;
-                c.t_half = 0.5 * beam_length;
-            }
-            cells.push_back(c);
-        }
-    };
-    const double corner[4][2] = {{-b, -hh}, {b, -hh}, {b, hh}, {-b, hh}};
-    const double joint_depth = std::min(depth, beam_depth);
-    for (int i = 0; i < columns; ++i) {
-        add_face(i, -1, corner[0], corner[1], 0, -1, width * depth, cells_across, depth);
-        add_face(i, -1, corner[1], corner[2], 1, 0, height * depth, cells_up, depth);
-        add_face(i, -1, corner[3], corner[0], -1, 0, height * depth, cells_up, depth);
-        add_face(i, beam, corner[3], corner[2], 0, 1, width * depth, cells_across, joint_depth);
-    }
-    const int n_cells = int(cells.size());
+// every body and cell together by RK4, from the model's state at rest
+WinklerTrace integrate(const Model& md, const Law& law, double duration, double sample_dt) {
+    const auto& cells = md.cells;
+    const auto& m = md.m;
+    const auto& inertia = md.inertia;
+    const double g = law.g, kn = law.kn, ks = law.ks, mu = law.mu, steps_per_period = law.steps_per_period;
+    const double omega2 = md.omega2;
+    const auto& drive = *law.drive;
+    const int bodies = int(m.size()), n_cells = int(cells.size());
     const int lost_at = bodies * kBodyVars + n_cells, work_at = lost_at + 1;
-
-    // the stiffest mode is bounded, per body, by every face it can press on its farthest lever
-    double omega2 = 0.0;
-    {
-        const double lever2 = b * b + hh * hh, area = depth * (2.0 * width + 2.0 * height);
-        omega2 = std::max(kn, ks) * area * (1.0 / mass + lever2 / inertia[0]);
-        const double beam_lever2 = 0.25 * (beam_length * beam_length + beam_height * beam_height);
-        const double beam_area = columns * width * joint_depth;
-        omega2 = std::max(omega2, std::max(kn, ks) * beam_area * (1.0 / beam_mass + beam_lever2 / inertia[size_t(beam)]));
-    }
+    const size_t x_at = size_t(md.traced * kBodyVars), z_at = x_at + 1, th_at = x_at + 2;
     const double h = 2.0 * M_PI / std::sqrt(omega2) / steps_per_period;
     const double wanted = std::ceil(duration / h);
     if (!(wanted <= 1e8))
-        throw Error("Winkler frame: kn = " + std::to_string(kn) + " N/m³ over " + std::to_string(duration) + " s needs " +
+        throw Error(std::string(law.who) + ": kn = " + std::to_string(kn) + " N/m³ over " + std::to_string(duration) + " s needs " +
                     std::to_string(wanted) + " steps of " + std::to_string(h) + " s, more than 1e8");
 
     auto body = [](const State& s, int i) { return &s[size_t(i * kBodyVars)]; };   // x, z, θ, vx, vz, ω
@@ -291,24 +292,17 @@ WinklerTrace WinklerFrame::rest(double duration, double sample_dt) const {
         }
     };
 
-    // at rest: each column sunk by the weight it carries, W_column + W_beam/N over its base, the beam
-    // on their tops sunk by its share over a top
     State s(size_t(work_at + 1), 0.0);
-    const double settle_base = (mass + beam_mass / columns) * g / (kn * width * depth);
-    const double settle_top = beam_mass / columns * g / (kn * width * joint_depth);
-    for (int i = 0; i < columns; ++i) {
-        s[size_t(i * kBodyVars)] = column_x[size_t(i)];
-        s[size_t(i * kBodyVars + 1)] = hh - settle_base;
+    for (int i = 0; i < bodies; ++i) {
+        s[size_t(i * kBodyVars)] = md.x0[size_t(i)];
+        s[size_t(i * kBodyVars + 1)] = md.z0[size_t(i)];
     }
-    s[size_t(beam * kBodyVars)] = beam_x;
-    s[size_t(beam * kBodyVars + 1)] = height - settle_base - settle_top + 0.5 * beam_height;
-
     const double e0 = energy(s);
     tr.step = h;
     tr.t.push_back(0);
-    tr.theta.push_back(s[2]);
-    tr.x.push_back(s[0]);
-    tr.z.push_back(s[1]);
+    tr.theta.push_back(s[th_at]);
+    tr.x.push_back(s[x_at]);
+    tr.z.push_back(s[z_at]);
     double next_sample = sample_dt, swing_max = 0;
     const long steps = long(wanted);
     for (long n = 1; n <= steps; ++n) {
@@ -318,26 +312,144 @@ WinklerTrace WinklerFrame::rest(double duration, double sample_dt) const {
                     k3 = rate(axpy(p, 0.5 * h, k2), t0 + 0.5 * h), k4 = rate(axpy(p, h, k3), t0 + h);
         s = axpy(axpy(axpy(axpy(p, h / 6, k1), h / 3, k2), h / 3, k3), h / 6, k4);
         settle_shear(s);
-        if (!std::isfinite(s[2]) || !std::isfinite(s[1]))
-            throw Error("Winkler frame: the integration went unstable at t = " + std::to_string(t0 + h) + " s");
+        if (!std::isfinite(s[th_at]) || !std::isfinite(s[z_at]))
+            throw Error(std::string(law.who) + ": the integration went unstable at t = " + std::to_string(t0 + h) + " s");
         tr.energy_error = std::max(tr.energy_error, std::abs(energy(s) - e0));
-        if ((p[2] > 0 && s[2] <= 0) || (p[2] < 0 && s[2] >= 0)) {
-            tr.crossings.push_back(t0 + h * p[2] / (p[2] - s[2]));
+        if ((p[th_at] > 0 && s[th_at] <= 0) || (p[th_at] < 0 && s[th_at] >= 0)) {
+            tr.crossings.push_back(t0 + h * p[th_at] / (p[th_at] - s[th_at]));
             if (tr.crossings.size() > 1) tr.amplitudes.push_back(swing_max);
             swing_max = 0;
         }
-        if (!tr.crossings.empty()) swing_max = std::max(swing_max, std::abs(s[2]));
+        if (!tr.crossings.empty()) swing_max = std::max(swing_max, std::abs(s[th_at]));
         if (n * h >= next_sample - 1e-12) {
             tr.t.push_back(n * h);
-            tr.theta.push_back(s[2]);
-            tr.x.push_back(s[0]);
-            tr.z.push_back(s[1]);
+            tr.theta.push_back(s[th_at]);
+            tr.x.push_back(s[x_at]);
+            tr.z.push_back(s[z_at]);
             next_sample += sample_dt;
         }
     }
-    if (!tr.crossings.empty() && swing_max > 0 && std::abs(s[2]) < 0.5 * swing_max) tr.amplitudes.push_back(swing_max);
+    if (!tr.crossings.empty() && swing_max > 0 && std::abs(s[th_at]) < 0.5 * swing_max) tr.amplitudes.push_back(swing_max);
     tr.dissipated = s[size_t(lost_at)];
     return tr;
+}
+
+}  // namespace
+
+WinklerTrace WinklerFrame::rest(double duration, double sample_dt) const {
+    const Law law{"Winkler frame", g, kn, ks, mu, zeta, steps_per_period, &drive};
+    check_law(law, duration, sample_dt);
+    auto bad = [](const std::string& what, double v) {
+        throw Error("Winkler frame: " + what + " = " + std::to_string(v) + " is out of range");
+    };
+    for (auto [name, v] : {std::pair<const char*, double>{"width", width}, {"height", height}, {"depth", depth},
+                           {"mass", mass}, {"beam_length", beam_length}, {"beam_height", beam_height},
+                           {"beam_depth", beam_depth}, {"beam_mass", beam_mass}})
+        if (!(v > 0)) bad(name, v);
+    if (column_x.size() < 2 || column_x.size() > 8) bad("columns", double(column_x.size()));
+    const int columns = int(column_x.size());
+    if (cells_across < 1 || cells_up < 1 || columns * (2 * cells_across + 2 * cells_up) > max_cells)
+        bad("cells", double(columns * (2 * cells_across + 2 * cells_up)));
+
+    const int beam = columns;
+    const double b = 0.5 * width, hh = 0.5 * height;
+    Model md;
+    md.m.assign(size_t(columns), mass);
+    md.inertia.assign(size_t(columns), mass * (width * width + height * height) / 12.0);
+    md.m.push_back(beam_mass);
+    md.inertia.push_back(beam_mass * (beam_length * beam_length + beam_height * beam_height) / 12.0);
+    // each column's lower faces (bottom, +x side, −x side) on the ground, and its top under the
+    // beam's bottom face (the larger: dem's target), each cut into equal cells
+    const double corner[4][2] = {{-b, -hh}, {b, -hh}, {b, hh}, {-b, hh}};
+    const double joint_depth = std::min(depth, beam_depth);
+    const TargetFace beam_bottom{{0.0, -0.5 * beam_height}, {0.0, -1.0}, 0.5 * beam_length};
+    for (int i = 0; i < columns; ++i) {
+        add_face(md, law, i, -1, nullptr, corner[0], corner[1], 0, -1, width * depth, cells_across, depth);
+        add_face(md, law, i, -1, nullptr, corner[1], corner[2], 1, 0, height * depth, cells_up, depth);
+        add_face(md, law, i, -1, nullptr, corner[3], corner[0], -1, 0, height * depth, cells_up, depth);
+        add_face(md, law, i, beam, &beam_bottom, corner[3], corner[2], 0, 1, width * depth, cells_across, joint_depth);
+    }
+    // the stiffest mode is bounded, per body, by every face it can press on its farthest lever
+    {
+        const double lever2 = b * b + hh * hh, area = depth * (2.0 * width + 2.0 * height);
+        md.omega2 = std::max(kn, ks) * area * (1.0 / mass + lever2 / md.inertia[0]);
+        const double beam_lever2 = 0.25 * (beam_length * beam_length + beam_height * beam_height);
+        const double beam_area = columns * width * joint_depth;
+        md.omega2 = std::max(md.omega2, std::max(kn, ks) * beam_area * (1.0 / beam_mass + beam_lever2 / md.inertia.back()));
+    }
+    // at rest: each column sunk by the weight it carries, W_column + W_beam/N over its base, the beam
+    // on their tops sunk by its share over a top
+    const double settle_base = (mass + beam_mass / columns) * g / (kn * width * depth);
+    const double settle_top = beam_mass / columns * g / (kn * width * joint_depth);
+    for (int i = 0; i < columns; ++i) md.x0.push_back(column_x[size_t(i)]), md.z0.push_back(hh - settle_base);
+    md.x0.push_back(beam_x);
+    md.z0.push_back(height - settle_base - settle_top + 0.5 * beam_height);
+    return integrate(md, law, duration, sample_dt);
+}
+
+WinklerTrace WinklerStack::rest(double duration, double sample_dt) const {
+    const Law law{"Winkler stack", g, kn, ks, mu, zeta, steps_per_period, &drive};
+    check_law(law, duration, sample_dt);
+    auto bad = [](const std::string& what, double v) {
+        throw Error("Winkler stack: " + what + " = " + std::to_string(v) + " is out of range");
+    };
+    if (layers.size() < 2 || layers.size() > 16) bad("layers", double(layers.size()));
+    if (traced < 0 || traced >= int(layers.size())) bad("traced", traced);
+    int n_cells = 0;
+    for (const auto& l : layers) {
+        for (double v : {l.width, l.height, l.depth, l.mass})
+            if (!(v > 0)) bad("a layer's size or mass", v);
+        if (l.cells_across < 1 || l.cells_up < 1) bad("a layer's cells", std::min(l.cells_across, l.cells_up));
+        n_cells += 2 * l.cells_across + 2 * l.cells_up;
+    }
+    if (n_cells > max_cells) bad("cells", n_cells);
+    Model md;
+    md.traced = traced;
+    for (const auto& l : layers) {
+        md.m.push_back(l.mass);
+        md.inertia.push_back(l.mass * (l.width * l.width + l.height * l.height) / 12.0);
+        // every face it can press, on its farthest lever
+        const double lever2 = 0.25 * (l.width * l.width + l.height * l.height), area = l.depth * 2.0 * (l.width + l.height);
+        md.omega2 = std::max(md.omega2, std::max(kn, ks) * area * (1.0 / l.mass + lever2 / md.inertia.back()));
+    }
+    // each bed joint: the smaller of the two faces hits the larger (dem's target; equal: the lower
+    // one is the target), the hitting block's sides with its bottom; the first layer on the ground
+    double z = 0.0, carried = 0.0;
+    for (const auto& l : layers) carried += l.mass;
+    for (int k = 0; k < int(layers.size()); ++k) {
+        const WinklerLayer& l = layers[size_t(k)];
+        const double b = 0.5 * l.width, hh = 0.5 * l.height;
+        const double corner[4][2] = {{-b, -hh}, {b, -hh}, {b, hh}, {-b, hh}};
+        double area;
+        if (k == 0) {
+            area = l.width * l.depth;
+            add_face(md, law, k, -1, nullptr, corner[0], corner[1], 0, -1, l.width * l.depth, l.cells_across, l.depth);
+            add_face(md, law, k, -1, nullptr, corner[1], corner[2], 1, 0, l.height * l.depth, l.cells_up, l.depth);
+            add_face(md, law, k, -1, nullptr, corner[3], corner[0], -1, 0, l.height * l.depth, l.cells_up, l.depth);
+        } else {
+            const WinklerLayer& u = layers[size_t(k - 1)];
+            const double depth = std::min(l.depth, u.depth);
+            area = std::min(l.width, u.width) * depth;
+            if (l.width * l.depth <= u.width * u.depth) {   // this layer's bottom hits the top below
+                const TargetFace top{{0.0, 0.5 * u.height}, {0.0, 1.0}, 0.5 * u.width};
+                add_face(md, law, k, k - 1, &top, corner[0], corner[1], 0, -1, l.width * l.depth, l.cells_across, depth);
+                add_face(md, law, k, k - 1, &top, corner[1], corner[2], 1, 0, l.height * l.depth, l.cells_up, depth);
+                add_face(md, law, k, k - 1, &top, corner[3], corner[0], -1, 0, l.height * l.depth, l.cells_up, depth);
+            } else {   // the top below hits this layer's bottom
+                const double ub = 0.5 * u.width, uh = 0.5 * u.height;
+                const double top_l[2] = {-ub, uh}, top_r[2] = {ub, uh};
+                const TargetFace bottom{{0.0, -hh}, {0.0, -1.0}, b};
+                add_face(md, law, k - 1, k, &bottom, top_l, top_r, 0, 1, u.width * u.depth, u.cells_across, depth);
+            }
+        }
+        // at rest: sunk by the weight it carries over the joint's area
+        z -= carried * g / (kn * area);
+        md.x0.push_back(0.0);
+        md.z0.push_back(z + hh);
+        z += l.height;
+        carried -= l.mass;
+    }
+    return integrate(md, law, duration, sample_dt);
 }
 
 }  // namespace cairn::oracle

@@ -1,7 +1,7 @@
 #pragma once
-/// A frame of equal rectangular columns under one rectangular beam, rocking in plane on
-/// no-tension Winkler joints: the reference for a frame (Makris & Vassiliou's trilithon) on dem's
-/// overlap contact. Every column stands on a Winkler base (the top z = 0 of the ground, which moves
+/// Rigid rectangles rocking in plane on no-tension Winkler joints: a frame of equal columns under
+/// one beam (Makris & Vassiliou's trilithon), or a stack of blocks one on another (a column of
+/// drums): the references for those on dem's overlap contact. Every column stands on a Winkler base (the top z = 0 of the ground, which moves
 /// with the drive); the beam rests on the columns' tops, each top a bed of springs kn per unit area
 /// under the beam's bottom face. Each joint acts as WinklerRocking's base does (analytic/winkler_rocking.hpp):
 /// over a contact cell d is affine, so the normal force, its centre and the stored energy are closed
@@ -47,6 +47,34 @@ struct WinklerFrame {
     /// sampling every `sample_dt` (s): the first column's rotation θ and centre, crossings,
     /// amplitudes and the energy ledger as WinklerRocking's. Throws cairn::Error for bad input or
     /// beyond 1e8 steps.
+    WinklerTrace rest(double duration, double sample_dt) const;
+};
+
+/// one block of a stack, centred on the stack's vertical axis
+struct WinklerLayer {
+    double width, height, depth;   ///< along x (the drive), up, along the axis y, m
+    double mass;                   ///< kg
+    int cells_across = 1;          ///< cells of its bottom and top faces across the axis
+    int cells_up = 1;              ///< cells of each side face up its height
+};
+
+/// blocks stacked on the ground z = 0, each resting on the one below, centred on one vertical
+/// axis; each bed joint is the smaller face pressed into the larger (dem's target, the lower one
+/// where they are equal), with the hitting block's sides; law and drive as WinklerFrame's
+struct WinklerStack {
+    std::vector<WinklerLayer> layers;   ///< bottom first
+    int traced = 0;                     ///< the layer whose θ and centre the trace records
+    double g;                           ///< m/s²
+    double kn;                          ///< N/m³
+    double ks = 0.0;                    ///< N/m³
+    double mu = 0.0;
+    double zeta = 0.0;                  ///< as WinklerFrame's, per joint over its pair's reduced mass
+    static constexpr int max_cells = 512;   ///< bound on all the layers' cells together
+    double steps_per_period = 400.0;
+    std::function<std::array<double, 2>(double)> drive{};   ///< body force per unit mass, {x, z}, m/s²
+
+    /// from rest, each joint settled by the weight above it, under `drive` for `duration` (s); as
+    /// WinklerFrame::rest
     WinklerTrace rest(double duration, double sample_dt) const;
 };
 

@@ -25,6 +25,10 @@ void check_ground(const Scene& scene) { read_ground_setup(scene); }
 /// A drive past μ·(g − f_z) slides a resting block (the Winkler base models that, Housner's
 /// pivot does not); a rocking block can slide below it too, which this does not catch
 std::string housner_unmodelled(const Scene& scene, const GroundSetup& s) {
+    if (!s.stack.empty())
+        return "a stack of " + std::to_string(s.stack.size()) +
+               " blocks rocking on one another: no rigid-contact oracle models it (its blocks' motions are chaotic "
+               "and each impact's loss is the engine's own); Housner's curve of the block alone is a guide";
     if (s.friction_demand <= scene.contact.friction) return "";
     char why[240];
     std::snprintf(why, sizeof why,
@@ -37,7 +41,11 @@ std::string housner_unmodelled(const Scene& scene, const GroundSetup& s) {
 /// why the Winkler block does not model a penalty run, or empty
 std::string penalty_unmodelled(const Scene& scene, ContactKind contact, const GroundSetup& s) {
     const std::string why = winkler_unmodelled(scene, contact, s.axis_block);
-    if (!why.empty() || s.columns == 1) return why;
+    if (!why.empty() || (s.columns == 1 && s.stack.empty())) return why;
+    if (!s.stack.empty()) {
+        if (s.stack.size() > 16) return "a stack of " + std::to_string(s.stack.size()) + " blocks: the Winkler stack models up to 16";
+        return "";
+    }
     const auto w = winkler_model(scene, contact, s.axis_block);
     const int cells = s.columns * (2 * w.cells_across + 2 * w.cells_up);
     if (s.columns > 8 || cells > oracle::WinklerFrame::max_cells)
@@ -213,11 +221,14 @@ CaseAnalysis analyse_ground(const Scene& scene, const std::vector<Sample>& sampl
     const bool winkler = contact.penalty;
     if (winkler) {
         out.analytic = ground_winkler(scene, contact, s, t);
-        out.analytic_key = s.columns > 1 ? "Winkler frame" : "Winkler base";
+        out.analytic_key = !s.stack.empty() ? "Winkler stack" : s.columns > 1 ? "Winkler frame" : "Winkler base";
         out.analytic_label =
-            s.columns > 1 ? "the frame's rigid columns and beam on no-tension Winkler joints of modulus kn (base and "
-                            "column tops) under the same drive (dem's shear springs and dashpots per sub-contact), "
-                            "integrated independently"
+            !s.stack.empty()
+                ? "the stack's rigid blocks on no-tension Winkler bed joints of modulus kn under the same drive (dem's "
+                  "shear springs and dashpots per sub-contact), integrated independently"
+            : s.columns > 1 ? "the frame's rigid columns and beam on no-tension Winkler joints of modulus kn (base and "
+                              "column tops) under the same drive (dem's shear springs and dashpots per sub-contact), "
+                              "integrated independently"
                           : "rigid block on a no-tension Winkler base of modulus kn under the same drive (dem's shear "
                             "springs and dashpots per sub-contact), integrated independently";
     } else {
@@ -231,7 +242,7 @@ CaseAnalysis analyse_ground(const Scene& scene, const std::vector<Sample>& sampl
     const Trust trust = trust_of(scene, contact, s, ref_curve, ref.overturned);
     // a deformable block far softer than a rigid one against its joints rocks as a flexible body
     std::string flexible = flexible_block_reason(scene, scene.reference->block, contact.deformable, kRigidUnderDrive);
-    if (s.columns > 1 && contact.deformable)   // a frame: its softest member
+    if ((s.columns > 1 || !s.stack.empty()) && contact.deformable)   // a frame or a stack: its softest member
         for (size_t b = 0; b < scene.blocks.size() && flexible.empty(); ++b)
             if (!scene.blocks[b].fixed) flexible = flexible_block_reason(scene, int(b), true, kFrameRigidUnderDrive);
     if (!flexible.empty()) {
@@ -239,9 +250,11 @@ CaseAnalysis analyse_ground(const Scene& scene, const std::vector<Sample>& sampl
         return out;
     }
     const char* slop = " (rigid-contact engines: their step and contact slop)";
-    const std::string model = winkler ? (s.columns > 1 ? "the frame on Winkler joints (dem's contact law, integrated "
-                                                         "independently)"
-                                                       : "the Winkler base (dem's contact law, integrated independently)")
+    const std::string model = winkler ? (!s.stack.empty() ? "the stack on Winkler joints (dem's contact law, integrated "
+                                                            "independently)"
+                                         : s.columns > 1   ? "the frame on Winkler joints (dem's contact law, integrated "
+                                                             "independently)"
+                                                           : "the Winkler base (dem's contact law, integrated independently)")
                               : s.columns > 1 ? std::string("the rigid frame of Makris & Vassiliou") + slop
                                               : std::string("Housner's rigid block") + slop;
     const double t_tol = time_tolerance(scene, s);
@@ -283,7 +296,9 @@ CaseAnalysis analyse_ground(const Scene& scene, const std::vector<Sample>& sampl
     }
     const double said = ref.overturned ? 1.0 : 0.0, did = run.overturned ? 1.0 : 0.0;
     const char* rule = "overturned: |θ| reached π/3, or ended beyond α";
-    const char* as = winkler ? (s.columns > 1 ? "as the frame on Winkler joints; " : "as the Winkler base; ")
+    const char* as = winkler ? (!s.stack.empty() ? "as the stack on Winkler joints; "
+                                : s.columns > 1    ? "as the frame on Winkler joints; "
+                                                   : "as the Winkler base; ")
                        : s.columns > 1 ? "as the rigid frame; "
                                        : "as Housner's block; ";
     const std::string verdict_basis = as + std::string(rule);

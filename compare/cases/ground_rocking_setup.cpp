@@ -292,6 +292,69 @@ void read_frame(const Scene& scene, const BlockDef& d, GroundSetup& out) {
     out.ratio = (1.0 - 1.5 * std::sin(al) * std::sin(al) + 3.0 * g * std::cos(2.0 * al)) / (1.0 + 3.0 * g);
 }
 
+/// the free blocks as a stack, bottom first, when each rests on the one below (its bottom within 1 %
+/// of its height of that one's top), one to a level, centred on the first (1 % of its width along
+/// either horizontal axis): its members' scene indices; empty when they are not
+std::vector<int> stack_members(const Scene& scene) {
+    std::vector<int> free;
+    for (size_t i = 0; i < scene.blocks.size(); ++i)
+        if (!scene.blocks[i].fixed) free.push_back(int(i));
+    if (free.size() < 2) return {};
+    std::sort(free.begin(), free.end(), [&](int x, int y) {
+        return heights(scene.blocks[size_t(x)]).first < heights(scene.blocks[size_t(y)]).first;
+    });
+    auto centre = [&](const BlockDef& b) { return Vec3(b.position + b.orientation * mass_properties(b.corners, 1.0).centre); };
+    const BlockDef& first = scene.blocks[size_t(free[0])];
+    const Vec3 c0 = centre(first);
+    const double width = std::min(extent_along(first, Vec3::UnitX()), extent_along(first, Vec3::UnitY()));
+    for (size_t k = 1; k < free.size(); ++k) {
+        const BlockDef& b = scene.blocks[size_t(free[k])];
+        const auto [bottom, top] = heights(b);
+        if (std::abs(bottom - heights(scene.blocks[size_t(free[k - 1])]).second) > 0.01 * (top - bottom)) return {};
+        const Vec3 off = centre(b) - c0;
+        if (std::hypot(off.x(), off.y()) > 0.01 * width) return {};
+    }
+    return free;
+}
+
+/// the stack's members as the stack oracle needs them: upright boxes square to the block, the first
+/// wholly on a fixed block, all driven alike at their centres (a [ground_motion]); fills out.stack
+void read_stack(const Scene& scene, const BlockDef& d, const std::vector<int>& members, GroundSetup& out) {
+    const Vec3 side = d.orientation * Vec3::UnitX();
+    for (int i : members) {
+        const BlockDef& b = scene.blocks[size_t(i)];
+        require_upright_box(scene, b, "stack's block");
+        const Vec3 x = b.orientation * Vec3::UnitX();
+        // 1e-6: square as written; a block turned about the vertical rocks on its own corners
+        if (std::abs(x.cross(side).z()) > 1e-6 && std::abs(x.dot(side)) > 1e-6)
+            throw refuse(scene, "blocks." + b.name + ".orientation: a stack's blocks must be square to '" + d.name +
+                                    "' (turned about the vertical they rock on their corners)");
+    }
+    require_support(scene, scene.blocks[size_t(members.front())]);
+    const std::vector<double> at = drive_samples(out.breaks);
+    std::vector<std::vector<const LoadDef*>> loads(scene.blocks.size());
+    for (const auto& l : scene.loads) loads[size_t(l.block)].push_back(&l);
+    const int a = scene.reference->block;
+    const double m_block = block_mass(scene, a);
+    double largest = 0.0;
+    for (double t : at) largest = std::max(largest, drive_of(loads[size_t(a)], m_block, t).norm());
+    for (int i : members) {
+        const BlockDef& b = scene.blocks[size_t(i)];
+        const Vec3 centre = mass_properties(b.corners, 1.0).centre;
+        const double m = block_mass(scene, i);
+        const double size = heights(b).second - heights(b).first;
+        for (const LoadDef* l : loads[size_t(i)])
+            if (!l->body && (l->point - centre).norm() > 1e-9 * size)
+                throw refuse(scene, "a load on block '" + b.name + "' acts off its centre of mass: the stack's oracle "
+                                    "drives every block at its centre (a [ground_motion])");
+        for (double t : at)
+            if ((drive_of(loads[size_t(i)], m, t) - drive_of(loads[size_t(a)], m_block, t)).norm() > 1e-9 * largest)
+                throw refuse(scene, "block '" + b.name + "' is driven unlike '" + d.name +
+                                        "' per unit mass: the stack's oracle shakes every block alike (a [ground_motion])");
+    }
+    out.stack = members;
+}
+
 }  // namespace
 
 /// the scene as the oracles see it; throws cairn::Error naming what they cannot model
@@ -300,6 +363,19 @@ GroundSetup read_ground_setup(const Scene& scene) {
     const int a = scene.reference->block;
     const BlockDef& d = scene.blocks.at(size_t(a));
     require_upright_box(scene, d, "block");
+    // the free blocks one on another (a column of drums): the reference may be any of them
+    const std::vector<int> members = stack_members(scene);
+    if (!members.empty()) {
+        Vec3 lo = Vec3::Constant(1e300), hi = Vec3::Constant(-1e300);
+        for (const auto& c : d.corners) lo = lo.cwiseMin(c), hi = hi.cwiseMax(c);
+        GroundSetup out;
+        out.free = free_index(scene, a);
+        read_drive(scene, d, (hi - lo).maxCoeff(), out);
+        read_direction(scene, d, out);
+        out.alpha = housner_block(scene, out.axis_block).alpha();
+        read_stack(scene, d, members, out);
+        return out;
+    }
     // a block resting on free blocks (the beam of a frame, a cap): the reference is one of those
     {
         const auto [bottom, top] = heights(d);
@@ -380,7 +456,28 @@ std::vector<double> ground_winkler(const Scene& scene, ContactKind contact, cons
     };
     const double duration = t.back() + 1e-9, sample = std::min(1e-3, t.size() > 1 ? t[1] - t[0] : 1e-3);
     oracle::WinklerTrace tr;
-    if (s.columns > 1) {
+    if (!s.stack.empty()) {
+        // the stack: each block on the one below, its cells as dem cuts its faces
+        oracle::WinklerStack st{{}, 0, w.g, w.kn};
+        st.ks = w.ks, st.mu = w.mu, st.zeta = w.zeta;
+        st.steps_per_period = w.steps_per_period;
+        st.drive = w.drive;
+        for (size_t k = 0; k < s.stack.size(); ++k) {
+            const int i = s.stack[k];
+            const BlockDef& b = scene.blocks[size_t(i)];
+            oracle::WinklerLayer l{extent_along(b, s.dir), heights(b).second - heights(b).first, extent_along(b, s.axis),
+                                   block_mass(scene, i)};
+            // a rigid block's side is one hitting face, a deformable one's each element face
+            const auto& div = b.mesh.divisions;
+            const Vec3 along = b.orientation.conjugate() * s.dir;
+            const int across = std::abs(along.x()) > 0.5 ? div[0] : div[1];
+            l.cells_across = (contact.deformable ? across : 1) * scene.contact.subdivision;
+            l.cells_up = (contact.deformable ? div[2] : 1) * scene.contact.subdivision;
+            st.layers.push_back(l);
+            if (i == scene.reference->block) st.traced = int(k);
+        }
+        tr = st.rest(duration, sample);
+    } else if (s.columns > 1) {
         // the frame: every column as the block, the beam on their tops
         oracle::WinklerFrame f{w.width, w.height, w.depth, w.mass, s.column_x, s.beam_length, s.beam_height,
                                s.beam_depth, s.beam_mass, s.beam_x, w.g, w.kn};

@@ -35,6 +35,9 @@ struct GroundSetup {
     double beam_x = 0.0;                 ///< m: the beam's centre along dir from the block's (frame)
     double beam_length = 0.0, beam_height = 0.0, beam_depth = 0.0;   ///< m: along dir, up, along the axis (frame)
     double beam_mass = 0.0;              ///< kg (frame)
+    /// a stack: every free block, each resting on the one below, the block among them (scene block
+    /// indices, bottom first); empty: none
+    std::vector<int> stack;
 };
 
 /// the scene as the oracles see it; throws cairn::Error naming the key of what they cannot model

@@ -180,6 +180,11 @@ TEST_CASE("a trilithon rocking under a ground pulse closes the energy balance", 
         check_closes({"earthquake/frame_pulse_rock"}, {"paper", "overlap"}, model);
 }
 
+TEST_CASE("a stack of drums rocking on one another under a ground pulse closes the energy balance", "[dem][energy]") {
+    // three drums, the base and two bed joints opening and landing
+    for (const char* model : {"rigid", "deformable"}) check_closes({"earthquake/stack_pulse_rock"}, {"overlap"}, model);
+}
+
 TEST_CASE("a rigid column closes the energy balance under a pushover", "[dem][energy]") {
     check_closes({"structures/column_pushover"}, {"paper", "overlap"}, "rigid");
 }

@@ -287,6 +287,43 @@ Scene frame(const std::vector<std::string>& overrides = {}) {
     return load_scene(std::string(CAIRN_SOURCE_DIR) + "/scenarios/earthquake/frame_pulse_rock.toml", set);
 }
 
+/// a 0.4 × 0.4 × 1.6 m post under a 0.6 × 0.6 × 0.3 m cap on a fixed base, under a constant 0.4 g
+Scene capped_post() {
+    return parse_scene(R"(
+[run]
+duration = 1.0
+[contact]
+kn = 1e10
+ks = 1e10
+friction = 0.7
+[materials.stone]
+density = 2500
+young = 30e9
+poisson = 0.2
+[blocks.P1]
+size = [0.4, 0.4, 1.6]
+position = [0.0, 0.0, 0.8]
+material = "stone"
+[blocks.cap]
+size = [0.6, 0.6, 0.3]
+position = [0.0, 0.0, 1.75]
+material = "stone"
+[blocks.base]
+size = [3.0, 3.0, 0.5]
+position = [0.0, 0.0, -0.25]
+material = "stone"
+fixed = true
+[ground_motion]
+time = [0.0, 10.0]
+acceleration = [0.4, 0.4]
+units = "g"
+[reference]
+kind = "ground_rocking"
+block = "P1"
+)",
+                       std::string(CAIRN_SOURCE_DIR) + "/scenarios/earthquake/capped_post.toml");
+}
+
 }  // namespace
 
 TEST_CASE("ground_rocking: a trilithon reads as Makris and Vassiliou's frame", "[cases][ground_rocking]") {
@@ -321,41 +358,12 @@ TEST_CASE("ground_rocking: what is not a frame of equal columns under one beam i
     auto says = [](const Scene& x, const std::string& what) {
         CHECK_THROWS_WITH(cases::read_ground_setup(x), Catch::Contains(what) && Catch::Contains("ground_rocking"));
     };
-    // a cap on one post: it turns with it or rocks on it
-    says(parse_scene(R"(
-[run]
-duration = 1.0
-[contact]
-kn = 1e10
-ks = 1e10
-friction = 0.7
-[materials.stone]
-density = 2500
-young = 30e9
-poisson = 0.2
-[blocks.P1]
-size = [0.4, 0.4, 1.6]
-position = [0.0, 0.0, 0.8]
-material = "stone"
-[blocks.cap]
-size = [0.6, 0.6, 0.3]
-position = [0.0, 0.0, 1.75]
-material = "stone"
-[blocks.base]
-size = [3.0, 3.0, 0.5]
-position = [0.0, 0.0, -0.25]
-material = "stone"
-fixed = true
-[ground_motion]
-time = [0.0, 10.0]
-acceleration = [0.4, 0.4]
-units = "g"
-[reference]
-kind = "ground_rocking"
-block = "P1"
-)",
-                     std::string(CAIRN_SOURCE_DIR) + "/scenarios/earthquake/capped_post.toml"),
-         "blocks.cap: the oracles model one block, or a frame of two or more equal columns");
+    // a cap on one post is a stack (read below); set off the post's axis it is neither
+    {
+        Scene x = capped_post();
+        x.blocks[size_t(x.block_index("cap"))].position.x() += 0.05;
+        says(x, "blocks.cap: the oracles model one block, or a frame of two or more equal columns");
+    }
     // the lintel named as the reference block: the frame is judged on a column
     {
         Scene x = frame();
@@ -387,6 +395,40 @@ block = "P1"
         x.loads.push_back(l);
         says(x, "block 'L' is driven unlike 'P1'");
     }
+}
+
+TEST_CASE("ground_rocking: blocks one on another read as a stack, judged on dem's Winkler joints only",
+          "[cases][ground_rocking]") {
+    // the capped post: the post and its cap, each on the one below, centred; either may be named
+    const Scene x = capped_post();
+    const cases::GroundSetup s = cases::read_ground_setup(x);
+    REQUIRE(s.stack.size() == 2);
+    CHECK(x.blocks[size_t(s.stack[0])].name == "P1");
+    CHECK(x.blocks[size_t(s.stack[1])].name == "cap");
+    Scene on_cap = x;
+    on_cap.reference->block = on_cap.block_index("cap");
+    CHECK(cases::read_ground_setup(on_cap).stack.size() == 2);
+    // its curve on dem's overlap contact is the stack on Winkler joints; rigid contact has no oracle
+    // for blocks rocking on one another and is shown beside Housner's lone block
+    const std::vector<double> t{0.0, 0.1, 0.2};
+    const auto& kind = cases::case_kind("ground_rocking", x.source);
+    CHECK(kind.curve(x, {true, true}, t).size() == 3);
+    std::vector<Sample> rest;
+    for (double time : t) {
+        Sample smp;
+        smp.t = time;
+        for (const auto& b : x.blocks)
+            if (!b.fixed) smp.blocks.push_back(BlockState{b.position, b.orientation});
+        rest.push_back(smp);
+    }
+    const auto rigid = kind.analyse(x, rest, {false});
+    REQUIRE(rigid.metrics.size() == 1);
+    CHECK(rigid.metrics[0].check == metrics::Check::not_comparable);
+    CHECK_THAT(rigid.metrics[0].basis, Catch::Contains("a stack of 2 blocks"));
+    // a block of the stack turned about the vertical is refused: it would rock on its corners
+    Scene turned = x;
+    turned.blocks[size_t(turned.block_index("cap"))].orientation = Quat(Eigen::AngleAxisd(0.3, Vec3::UnitZ()));
+    CHECK_THROWS_WITH(cases::read_ground_setup(turned), Catch::Contains("must be square to 'P1'"));
 }
 
 TEST_CASE("ground_rocking: a deformable block far softer than its joints is shown, not judged", "[cases][ground_rocking]") {

@@ -29,7 +29,7 @@ TEST_CASE("every shipped scene validates, and exactly the listed scenes ship", "
     const std::set<std::string> shipped = {
         "earthquake/block_pulse_hold.toml", "earthquake/block_pulse_slide.toml",
         "earthquake/block_pulse_rock.toml", "earthquake/block_pulse_overturn.toml",
-        "earthquake/column_elcentro.toml", "earthquake/frame_pulse_rock.toml", "earthquake/slope_pulse_slide.toml", "paper/friction_slide.toml",  "paper/friction_stick.toml",
+        "earthquake/column_elcentro.toml", "earthquake/frame_pulse_rock.toml", "earthquake/slope_pulse_slide.toml", "earthquake/stack_pulse_rock.toml", "paper/friction_slide.toml",  "paper/friction_stick.toml",
         "paper/friction_stick_base.toml",  "paper/impact.toml",          "paper/impact_damped.toml",
         "paper/rocking.toml",              "paper/rocking_damped_02.toml", "paper/rocking_damped_04.toml",
         "paper/rocking_housner.toml",      "paper/rocking_slender.toml", "paper/rocking_winkler.toml",
