@@ -43,7 +43,13 @@ std::string penalty_unmodelled(const Scene& scene, ContactKind contact, const Gr
     const std::string why = winkler_unmodelled(scene, contact, s.axis_block);
     if (!why.empty() || (s.columns == 1 && s.stack.empty())) return why;
     if (!s.stack.empty()) {
-        if (s.stack.size() > 16) return "a stack of " + std::to_string(s.stack.size()) + " blocks: the Winkler stack models up to 16";
+        const auto st = winkler_stack(scene, contact, s);
+        int cells = 0;
+        for (const auto& l : st.layers) cells += 2 * l.cells_across + 2 * l.cells_up;
+        if (s.stack.size() > 16 || cells > oracle::WinklerStack::max_cells)
+            return "a stack of " + std::to_string(s.stack.size()) + " blocks cut into " + std::to_string(cells) +
+                   " contact cells: the Winkler stack models up to 16 blocks and " +
+                   std::to_string(oracle::WinklerStack::max_cells) + " cells";
         return "";
     }
     const auto w = winkler_model(scene, contact, s.axis_block);

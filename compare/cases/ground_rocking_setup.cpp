@@ -441,6 +441,27 @@ oracle::RockingResult ground_housner(const Scene& scene, const GroundSetup& s, c
 }
 
 /// the Winkler block of dem's contact under the same drive, θ at the times t
+oracle::WinklerStack winkler_stack(const Scene& scene, ContactKind contact, const GroundSetup& s) {
+    const auto w = winkler_model(scene, contact, s.axis_block);
+    oracle::WinklerStack st{{}, 0, w.g, w.kn};
+    st.ks = w.ks, st.mu = w.mu, st.zeta = w.zeta;
+    for (size_t k = 0; k < s.stack.size(); ++k) {
+        const int i = s.stack[k];
+        const BlockDef& b = scene.blocks[size_t(i)];
+        oracle::WinklerLayer l{extent_along(b, s.dir), heights(b).second - heights(b).first, extent_along(b, s.axis),
+                               block_mass(scene, i)};
+        // a rigid block's side is one hitting face, a deformable one's each element face
+        const auto& div = b.mesh.divisions;
+        const Vec3 along = b.orientation.conjugate() * s.dir;
+        const int across = std::abs(along.x()) > 0.5 ? div[0] : div[1];
+        l.cells_across = (contact.deformable ? across : 1) * scene.contact.subdivision;
+        l.cells_up = (contact.deformable ? div[2] : 1) * scene.contact.subdivision;
+        st.layers.push_back(l);
+        if (i == scene.reference->block) st.traced = int(k);
+    }
+    return st;
+}
+
 std::vector<double> ground_winkler(const Scene& scene, ContactKind contact, const GroundSetup& s, const std::vector<double>& t) {
     auto w = winkler_model(scene, contact, s.axis_block);
     // 100 RK4 steps per contact period, not the oracle's 400: its error, of order (2π/100)⁴ of a
@@ -457,25 +478,9 @@ std::vector<double> ground_winkler(const Scene& scene, ContactKind contact, cons
     const double duration = t.back() + 1e-9, sample = std::min(1e-3, t.size() > 1 ? t[1] - t[0] : 1e-3);
     oracle::WinklerTrace tr;
     if (!s.stack.empty()) {
-        // the stack: each block on the one below, its cells as dem cuts its faces
-        oracle::WinklerStack st{{}, 0, w.g, w.kn};
-        st.ks = w.ks, st.mu = w.mu, st.zeta = w.zeta;
+        oracle::WinklerStack st = winkler_stack(scene, contact, s);
         st.steps_per_period = w.steps_per_period;
         st.drive = w.drive;
-        for (size_t k = 0; k < s.stack.size(); ++k) {
-            const int i = s.stack[k];
-            const BlockDef& b = scene.blocks[size_t(i)];
-            oracle::WinklerLayer l{extent_along(b, s.dir), heights(b).second - heights(b).first, extent_along(b, s.axis),
-                                   block_mass(scene, i)};
-            // a rigid block's side is one hitting face, a deformable one's each element face
-            const auto& div = b.mesh.divisions;
-            const Vec3 along = b.orientation.conjugate() * s.dir;
-            const int across = std::abs(along.x()) > 0.5 ? div[0] : div[1];
-            l.cells_across = (contact.deformable ? across : 1) * scene.contact.subdivision;
-            l.cells_up = (contact.deformable ? div[2] : 1) * scene.contact.subdivision;
-            st.layers.push_back(l);
-            if (i == scene.reference->block) st.traced = int(k);
-        }
         tr = st.rest(duration, sample);
     } else if (s.columns > 1) {
         // the frame: every column as the block, the beam on their tops

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "analytic/rocking_oracle.hpp"
+#include "analytic/winkler_frame.hpp"
 #include "cases/case_analysis.hpp"
 
 namespace cairn::cases {
@@ -58,6 +59,9 @@ double ground_ratio(const Scene& scene, const GroundSetup& s);
 
 /// Housner's block (or frame) under the scene's drive at the times t, with impact ratio r (< 0: its own)
 oracle::RockingResult ground_housner(const Scene& scene, const GroundSetup& s, const std::vector<double>& t, double r);
+
+/// the stack's blocks on Winkler bed joints as dem's contact cuts their faces (no drive yet)
+oracle::WinklerStack winkler_stack(const Scene& scene, ContactKind contact, const GroundSetup& s);
 
 /// the Winkler block of dem's contact (for a frame, its columns and beam on Winkler joints) under
 /// the same drive, θ at the times t
