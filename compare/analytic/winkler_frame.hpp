@@ -69,7 +69,7 @@ struct WinklerStack {
     double ks = 0.0;                    ///< N/m³
     double mu = 0.0;
     double zeta = 0.0;                  ///< as WinklerFrame's, per joint over its pair's reduced mass
-    static constexpr int max_cells = 512;   ///< bound on all the layers' cells together
+    static constexpr int max_cells = 256;   ///< bound on all the layers' cells together (the oracle's cost)
     double steps_per_period = 400.0;
     std::function<std::array<double, 2>(double)> drive{};   ///< body force per unit mass, {x, z}, m/s²
 
