@@ -365,26 +365,15 @@ GroundSetup read_ground_setup(const Scene& scene) {
     require_upright_box(scene, d, "block");
     // the free blocks one on another (a column of drums): the reference may be any of them
     const std::vector<int> members = stack_members(scene);
-    if (!members.empty()) {
-        Vec3 lo = Vec3::Constant(1e300), hi = Vec3::Constant(-1e300);
-        for (const auto& c : d.corners) lo = lo.cwiseMin(c), hi = hi.cwiseMax(c);
-        GroundSetup out;
-        out.free = free_index(scene, a);
-        read_drive(scene, d, (hi - lo).maxCoeff(), out);
-        read_direction(scene, d, out);
-        out.alpha = housner_block(scene, out.axis_block).alpha();
-        read_stack(scene, d, members, out);
-        return out;
-    }
-    // a block resting on free blocks (the beam of a frame, a cap): the reference is one of those
-    {
+    if (members.empty()) {
+        // a block resting on free blocks (the beam of a frame, a cap): the reference is one of those
         const auto [bottom, top] = heights(d);
         for (const auto& b : scene.blocks)
             if (!b.fixed && b.name != d.name && std::abs(heights(b).second - bottom) <= 0.01 * (top - bottom))
                 throw refuse(scene, "reference.block = \"" + d.name + "\" rests on block '" + b.name +
                                         "': name a block that stands on the fixed base (for a frame, one of its columns)");
+        require_support(scene, d);
     }
-    require_support(scene, d);
     Vec3 lo = Vec3::Constant(1e300), hi = Vec3::Constant(-1e300);
     for (const auto& c : d.corners) lo = lo.cwiseMin(c), hi = hi.cwiseMax(c);
     GroundSetup out;
@@ -392,6 +381,10 @@ GroundSetup read_ground_setup(const Scene& scene) {
     read_drive(scene, d, (hi - lo).maxCoeff(), out);
     read_direction(scene, d, out);
     out.alpha = housner_block(scene, out.axis_block).alpha();
+    if (!members.empty()) {
+        read_stack(scene, d, members, out);
+        return out;
+    }
     for (const auto& b : scene.blocks)
         if (!b.fixed && b.name != d.name) {
             read_frame(scene, d, out);
