@@ -3,6 +3,7 @@
 // trilithon and stack in test_engine_ground_rocking.cpp
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <cmath>
 
 #include "analytic/winkler_frame.hpp"
@@ -173,12 +174,12 @@ TEST_CASE("Winkler stack: a larger cap is pressed by the top below it, and the a
     flipped.drive = stack_pulse(-0.22);
     const auto b = flipped.rest(1.5, 1e-3);
     REQUIRE(a.theta.size() == b.theta.size());
+    // 1e-3 of the swing: the mirrored cells are summed in another order, and rocking grows that
+    // round-off through every landing (measured 3.2e-5 of the swing in the native build, 1.3e-4 in
+    // the sanitizer's); a wrong sign in a joint is of the order of the swing
     double diff = 0;
     for (size_t i = 0; i < a.theta.size(); ++i) diff = std::max(diff, std::abs(a.theta[i] + b.theta[i]));
-    // 1e-4 of the swing: the mirrored cells are summed in another order, and rocking grows that
-    // round-off through every landing (measured 3.2e-5 of it); a wrong sign in a joint is of the
-    // order of the swing
-    CHECK(diff < 1e-4 * largest(a));
+    CHECK(diff < 1e-3 * largest(a));
 }
 
 TEST_CASE("Winkler stack: bad input is refused, naming it", "[oracle][frame]") {
