@@ -129,8 +129,8 @@ WinklerTrace integrate(const Model& md, const Law& law, double duration, double 
     const double h = 2.0 * M_PI / std::sqrt(omega2) / steps_per_period;
     const double wanted = std::ceil(duration / h);
     if (!(wanted <= 1e8))
-        throw Error(std::string(law.who) + ": kn = " + std::to_string(kn) + " N/m³ over " + std::to_string(duration) + " s needs " +
-                    std::to_string(wanted) + " steps of " + std::to_string(h) + " s, more than 1e8");
+        throw Error(std::string(law.who) + ": kn = " + std::to_string(kn) + " N/m³ over " + std::to_string(duration) +
+                    " s needs " + std::to_string(wanted) + " steps of " + std::to_string(h) + " s, more than 1e8");
 
     auto body = [](const State& s, int i) { return &s[size_t(i * kBodyVars)]; };   // x, z, θ, vx, vz, ω
     // world point and velocity of body i's frame point (bx, bz)
@@ -222,7 +222,8 @@ WinklerTrace integrate(const Model& md, const Law& law, double duration, double 
     };
     auto rate = [&](const State& s, double t) {
         State d(s.size(), 0.0);
-        std::vector<double> fx(static_cast<size_t>(bodies)), fz(static_cast<size_t>(bodies)), tq(static_cast<size_t>(bodies), 0.0);
+        const size_t nb = static_cast<size_t>(bodies);
+        std::vector<double> fx(nb), fz(nb), tq(nb, 0.0);
         std::array<double, 2> a{0.0, 0.0};
         if (drive) a = drive(t);
         for (int i = 0; i < bodies; ++i) {
@@ -264,7 +265,8 @@ WinklerTrace integrate(const Model& md, const Law& law, double duration, double 
         double e = s[size_t(lost_at)] - s[size_t(work_at)];
         for (int i = 0; i < bodies; ++i) {
             const double* q = body(s, i);
-            e += 0.5 * m[size_t(i)] * (q[3] * q[3] + q[4] * q[4]) + 0.5 * inertia[size_t(i)] * q[5] * q[5] + m[size_t(i)] * g * q[1];
+            const double mi = m[size_t(i)];
+            e += 0.5 * mi * (q[3] * q[3] + q[4] * q[4]) + 0.5 * inertia[size_t(i)] * q[5] * q[5] + mi * g * q[1];
         }
         for (int k = 0; k < n_cells; ++k) {
             const double q = s[size_t(bodies * kBodyVars + k)];
@@ -329,7 +331,8 @@ WinklerTrace integrate(const Model& md, const Law& law, double duration, double 
             next_sample += sample_dt;
         }
     }
-    if (!tr.crossings.empty() && swing_max > 0 && std::abs(s[th_at]) < 0.5 * swing_max) tr.amplitudes.push_back(swing_max);
+    if (!tr.crossings.empty() && swing_max > 0 && std::abs(s[th_at]) < 0.5 * swing_max)
+        tr.amplitudes.push_back(swing_max);
     tr.dissipated = s[size_t(lost_at)];
     return tr;
 }
@@ -375,7 +378,8 @@ WinklerTrace WinklerFrame::rest(double duration, double sample_dt) const {
         md.omega2 = std::max(kn, ks) * area * (1.0 / mass + lever2 / md.inertia[0]);
         const double beam_lever2 = 0.25 * (beam_length * beam_length + beam_height * beam_height);
         const double beam_area = columns * width * joint_depth;
-        md.omega2 = std::max(md.omega2, std::max(kn, ks) * beam_area * (1.0 / beam_mass + beam_lever2 / md.inertia.back()));
+        const double beam_omega2 = std::max(kn, ks) * beam_area * (1.0 / beam_mass + beam_lever2 / md.inertia.back());
+        md.omega2 = std::max(md.omega2, beam_omega2);
     }
     // at rest: each column sunk by the weight it carries, W_column + W_beam/N over its base, the beam
     // on their tops sunk by its share over a top
@@ -409,7 +413,8 @@ WinklerTrace WinklerStack::rest(double duration, double sample_dt) const {
         md.m.push_back(l.mass);
         md.inertia.push_back(l.mass * (l.width * l.width + l.height * l.height) / 12.0);
         // every face it can press, on its farthest lever
-        const double lever2 = 0.25 * (l.width * l.width + l.height * l.height), area = l.depth * 2.0 * (l.width + l.height);
+        const double lever2 = 0.25 * (l.width * l.width + l.height * l.height);
+        const double area = l.depth * 2.0 * (l.width + l.height);
         md.omega2 = std::max(md.omega2, std::max(kn, ks) * area * (1.0 / l.mass + lever2 / md.inertia.back()));
     }
     // each bed joint: the smaller of the two faces hits the larger (dem's target; equal: the lower

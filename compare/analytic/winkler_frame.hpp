@@ -3,7 +3,8 @@
 /// one beam (Makris & Vassiliou's trilithon), or a stack of blocks one on another (a column of
 /// drums): the references for those on dem's overlap contact. Every column stands on a Winkler base (the top z = 0 of the ground, which moves
 /// with the drive); the beam rests on the columns' tops, each top a bed of springs kn per unit area
-/// under the beam's bottom face. Each joint acts as WinklerRocking's base does (analytic/winkler_rocking.hpp):
+/// under the beam's bottom face. Each joint acts as WinklerRocking's base does
+/// (analytic/winkler_rocking.hpp):
 /// over a contact cell d is affine, so the normal force, its centre and the stored energy are closed
 /// form; one elastic-then-Coulomb shear spring ks·A per cell, kept at constant energy as A changes;
 /// dashpots by dem's contact damping ratio. Every body has 3 degrees of freedom (x, z, θ), all

@@ -163,7 +163,8 @@ const BlockDef* free_block_touching(const Scene& scene, const BlockDef& d) {
     const Corners w = placed_corners(d.corners, d.position, d.orientation);
     const double height = (w[4] - w[0]).norm();
     for (const auto& b : scene.blocks)
-        if (!b.fixed && &b != &d && overlap_depth(w, placed_corners(b.corners, b.position, b.orientation)) > -0.01 * height)
+        if (!b.fixed && &b != &d &&
+            overlap_depth(w, placed_corners(b.corners, b.position, b.orientation)) > -0.01 * height)
             return &b;
     return nullptr;
 }

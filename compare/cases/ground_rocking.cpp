@@ -256,11 +256,11 @@ CaseAnalysis analyse_ground(const Scene& scene, const std::vector<Sample>& sampl
         return out;
     }
     const char* slop = " (rigid-contact engines: their step and contact slop)";
-    const std::string model = winkler ? (!s.stack.empty() ? "the stack on Winkler joints (dem's contact law, integrated "
-                                                            "independently)"
-                                         : s.columns > 1   ? "the frame on Winkler joints (dem's contact law, integrated "
-                                                             "independently)"
-                                                           : "the Winkler base (dem's contact law, integrated independently)")
+    const std::string winkler_model = std::string(!s.stack.empty() ? "the stack on Winkler joints"
+                                                  : s.columns > 1  ? "the frame on Winkler joints"
+                                                                   : "the Winkler base") +
+                                      " (dem's contact law, integrated independently)";
+    const std::string model = winkler         ? winkler_model
                               : s.columns > 1 ? std::string("the rigid frame of Makris & Vassiliou") + slop
                                               : std::string("Housner's rigid block") + slop;
     const double t_tol = time_tolerance(scene, s);

@@ -124,6 +124,9 @@ double extent_along(const BlockDef& d, const Vec3& dir) {
     return hi - lo;
 }
 
+/// the block's centre of mass in the world, m
+Vec3 world_centre(const BlockDef& b) { return b.position + b.orientation * mass_properties(b.corners, 1.0).centre; }
+
 /// the loads per unit mass at t, m/s²
 Vec3 drive_of(const std::vector<const LoadDef*>& loads, double m, double t) {
     Vec3 f = Vec3::Zero();
@@ -275,10 +278,9 @@ void read_frame(const Scene& scene, const BlockDef& d, GroundSetup& out) {
     }
     out.columns = int(columns.size());
     out.beam = cap.name;
-    auto centre = [&](const BlockDef& b) { return Vec3(b.position + b.orientation * mass_properties(b.corners, 1.0).centre); };
-    const Vec3 origin = centre(d);
-    for (int c : columns) out.column_x.push_back((centre(scene.blocks[size_t(c)]) - origin).dot(across));
-    out.beam_x = (centre(cap) - origin).dot(across);
+    const Vec3 origin = world_centre(d);
+    for (int c : columns) out.column_x.push_back((world_centre(scene.blocks[size_t(c)]) - origin).dot(across));
+    out.beam_x = (world_centre(cap) - origin).dot(across);
     out.beam_length = extent_along(cap, across);
     out.beam_depth = extent_along(cap, out.axis);
     out.beam_height = heights(cap).second - heights(cap).first;
@@ -303,15 +305,14 @@ std::vector<int> stack_members(const Scene& scene) {
     std::sort(free.begin(), free.end(), [&](int x, int y) {
         return heights(scene.blocks[size_t(x)]).first < heights(scene.blocks[size_t(y)]).first;
     });
-    auto centre = [&](const BlockDef& b) { return Vec3(b.position + b.orientation * mass_properties(b.corners, 1.0).centre); };
     const BlockDef& first = scene.blocks[size_t(free[0])];
-    const Vec3 c0 = centre(first);
+    const Vec3 c0 = world_centre(first);
     const double width = std::min(extent_along(first, Vec3::UnitX()), extent_along(first, Vec3::UnitY()));
     for (size_t k = 1; k < free.size(); ++k) {
         const BlockDef& b = scene.blocks[size_t(free[k])];
         const auto [bottom, top] = heights(b);
         if (std::abs(bottom - heights(scene.blocks[size_t(free[k - 1])]).second) > 0.01 * (top - bottom)) return {};
-        const Vec3 off = centre(b) - c0;
+        const Vec3 off = world_centre(b) - c0;
         if (std::hypot(off.x(), off.y()) > 0.01 * width) return {};
     }
     return free;
@@ -350,7 +351,8 @@ void read_stack(const Scene& scene, const BlockDef& d, const std::vector<int>& m
         for (double t : at)
             if ((drive_of(loads[size_t(i)], m, t) - drive_of(loads[size_t(a)], m_block, t)).norm() > 1e-9 * largest)
                 throw refuse(scene, "block '" + b.name + "' is driven unlike '" + d.name +
-                                        "' per unit mass: the stack's oracle shakes every block alike (a [ground_motion])");
+                                        "' per unit mass: the stack's oracle shakes every block alike (a "
+                                        "[ground_motion])");
     }
     out.stack = members;
 }

@@ -32,7 +32,8 @@ struct GroundSetup {
     double gamma = 0.0;                  ///< m_beam / (N m_column) (frame)
     double p2_factor = 1.0;              ///< p̂²/p² = (1 + 2γ)/(1 + 3γ): the frame rocks as its column, slower
     double ratio = -1.0;                 ///< the frame's impact ratio (1 − 1.5 sin²α + 3γ cos 2α)/(1 + 3γ); < 0: Housner's
-    std::vector<double> column_x;        ///< m: each column's centre along dir from the block's, the block's (0) first (frame)
+    /// m: each column's centre along dir from the block's, the block's (0) first (frame)
+    std::vector<double> column_x;
     double beam_x = 0.0;                 ///< m: the beam's centre along dir from the block's (frame)
     double beam_length = 0.0, beam_height = 0.0, beam_depth = 0.0;   ///< m: along dir, up, along the axis (frame)
     double beam_mass = 0.0;              ///< kg (frame)
