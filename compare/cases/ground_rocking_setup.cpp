@@ -178,6 +178,36 @@ void require_support(const Scene& scene, const BlockDef& d) {
                             "not its own");
 }
 
+/// every one of `members` driven as block d per unit mass, at its centre (a [ground_motion] does
+/// that), over the drive's samples between `breaks`; `assembly` names the oracle in the refusal
+void require_driven_alike(const Scene& scene, const BlockDef& d, const std::vector<int>& members,
+                          const std::vector<double>& breaks, const std::string& assembly) {
+    const std::vector<double> at = drive_samples(breaks);
+    std::vector<std::vector<const LoadDef*>> loads(scene.blocks.size());
+    for (const auto& l : scene.loads) loads[size_t(l.block)].push_back(&l);
+    const int a = scene.reference->block;
+    const double m_block = block_mass(scene, a), height = heights(d).second - heights(d).first;
+    std::vector<Vec3> block_drive;
+    double largest = 0.0;
+    for (double t : at) {
+        block_drive.push_back(drive_of(loads[size_t(a)], m_block, t));
+        largest = std::max(largest, block_drive.back().norm());
+    }
+    for (int b : members) {
+        const BlockDef& blk = scene.blocks[size_t(b)];
+        const Vec3 centre = mass_properties(blk.corners, 1.0).centre;
+        const double m = block_mass(scene, b);
+        for (const LoadDef* l : loads[size_t(b)])
+            if (!l->body && (l->point - centre).norm() > 1e-9 * height)
+                throw refuse(scene, "a load on block '" + blk.name + "' acts off its centre of mass: the " + assembly +
+                                        "'s oracle drives every block at its centre (a [ground_motion])");
+        for (size_t i = 0; i < at.size(); ++i)
+            if ((drive_of(loads[size_t(b)], m, at[i]) - block_drive[i]).norm() > 1e-9 * largest)
+                throw refuse(scene, "block '" + blk.name + "' is driven unlike '" + d.name + "' per unit mass: the " +
+                                        assembly + "'s oracle shakes every block alike (a [ground_motion])");
+    }
+}
+
 /// the other free blocks as a frame around the block: equal columns standing beside it and one
 /// beam resting on all their tops, all driven alike at their centres; fills the frame's fields
 void read_frame(const Scene& scene, const BlockDef& d, GroundSetup& out) {
@@ -252,30 +282,9 @@ void read_frame(const Scene& scene, const BlockDef& d, GroundSetup& out) {
         }
     }
     // every block of the frame driven as the column, at its centre: a [ground_motion] does that
-    const std::vector<double> at = drive_samples(out.breaks);
-    std::vector<std::vector<const LoadDef*>> loads(scene.blocks.size());
-    for (const auto& l : scene.loads) loads[size_t(l.block)].push_back(&l);
-    std::vector<Vec3> column_drive;
-    double largest = 0.0;
-    for (double t : at) {
-        column_drive.push_back(drive_of(loads[size_t(a)], m_column, t));
-        largest = std::max(largest, column_drive.back().norm());
-    }
     std::vector<int> members = columns;
     members.push_back(beam);
-    for (int b : members) {
-        const BlockDef& blk = scene.blocks[size_t(b)];
-        const Vec3 centre = mass_properties(blk.corners, 1.0).centre;
-        const double m = block_mass(scene, b);
-        for (const LoadDef* l : loads[size_t(b)])
-            if (!l->body && (l->point - centre).norm() > 1e-9 * height)
-                throw refuse(scene, "a load on block '" + blk.name + "' acts off its centre of mass: the frame's oracle drives "
-                                    "every block at its centre (a [ground_motion])");
-        for (size_t i = 0; i < at.size(); ++i)
-            if ((drive_of(loads[size_t(b)], m, at[i]) - column_drive[i]).norm() > 1e-9 * largest)
-                throw refuse(scene, "block '" + blk.name + "' is driven unlike '" + d.name +
-                                        "' per unit mass: the frame's oracle shakes every block alike (a [ground_motion])");
-    }
+    require_driven_alike(scene, d, members, out.breaks, "frame");
     out.columns = int(columns.size());
     out.beam = cap.name;
     const Vec3 origin = world_centre(d);
@@ -332,28 +341,7 @@ void read_stack(const Scene& scene, const BlockDef& d, const std::vector<int>& m
                                     "' (turned about the vertical they rock on their corners)");
     }
     require_support(scene, scene.blocks[size_t(members.front())]);
-    const std::vector<double> at = drive_samples(out.breaks);
-    std::vector<std::vector<const LoadDef*>> loads(scene.blocks.size());
-    for (const auto& l : scene.loads) loads[size_t(l.block)].push_back(&l);
-    const int a = scene.reference->block;
-    const double m_block = block_mass(scene, a);
-    double largest = 0.0;
-    for (double t : at) largest = std::max(largest, drive_of(loads[size_t(a)], m_block, t).norm());
-    for (int i : members) {
-        const BlockDef& b = scene.blocks[size_t(i)];
-        const Vec3 centre = mass_properties(b.corners, 1.0).centre;
-        const double m = block_mass(scene, i);
-        const double size = heights(b).second - heights(b).first;
-        for (const LoadDef* l : loads[size_t(i)])
-            if (!l->body && (l->point - centre).norm() > 1e-9 * size)
-                throw refuse(scene, "a load on block '" + b.name + "' acts off its centre of mass: the stack's oracle "
-                                    "drives every block at its centre (a [ground_motion])");
-        for (double t : at)
-            if ((drive_of(loads[size_t(i)], m, t) - drive_of(loads[size_t(a)], m_block, t)).norm() > 1e-9 * largest)
-                throw refuse(scene, "block '" + b.name + "' is driven unlike '" + d.name +
-                                        "' per unit mass: the stack's oracle shakes every block alike (a "
-                                        "[ground_motion])");
-    }
+    require_driven_alike(scene, d, members, out.breaks, "stack");
     out.stack = members;
 }
 

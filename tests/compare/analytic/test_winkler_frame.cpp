@@ -26,10 +26,10 @@ oracle::WinklerFrame trilithon(double zeta = 0.05) {
     return f;
 }
 
-/// the scene's one-sine pulse at 3p̂ from 0.5 s, amplitude a (g): the blocks' body force −a_g along x
-std::function<std::array<double, 2>(double)> pulse(double a) {
-    return [a](double t) {
-        const double wp = 7.92741;
+/// one sine of ground acceleration at ω_p (rad/s; the trilithon's 3p̂ unless given) from 0.5 s,
+/// amplitude a (g): the blocks' body force −a_g along x
+std::function<std::array<double, 2>(double)> pulse(double a, double wp = 7.92741) {
+    return [a, wp](double t) {
         if (t < 0.5 || t > 0.5 + 2.0 * M_PI / wp) return std::array<double, 2>{0.0, 0.0};
         return std::array<double, 2>{-a * kG * std::sin(wp * (t - 0.5)), 0.0};
     };
@@ -120,14 +120,8 @@ oracle::WinklerStack drums(double zeta = 0.05) {
     return st;
 }
 
-/// the stack's one-sine pulse at 9.3 rad/s from 0.5 s, amplitude a (g)
-std::function<std::array<double, 2>(double)> stack_pulse(double a) {
-    return [a](double t) {
-        const double wp = 9.3;
-        if (t < 0.5 || t > 0.5 + 2.0 * M_PI / wp) return std::array<double, 2>{0.0, 0.0};
-        return std::array<double, 2>{-a * kG * std::sin(wp * (t - 0.5)), 0.0};
-    };
-}
+/// the stack's one-sine pulse: at 3p of the column of drums
+constexpr double kStackPulse = 9.3;   // rad/s
 
 }  // namespace
 
@@ -151,7 +145,7 @@ TEST_CASE("Winkler stack: undamped, its energy closes while the drums rock on on
     auto st = drums(0.0);
     st.steps_per_period = 400.0;
     st.traced = 2;
-    st.drive = stack_pulse(0.3);
+    st.drive = pulse(0.3, kStackPulse);
     const auto tr = st.rest(2.0, 1e-3);
     REQUIRE(largest(tr) > 0.02);
     const double scale = 3 * 112.5 * kG * std::hypot(0.15, 0.75) * largest(tr);
@@ -165,13 +159,13 @@ TEST_CASE("Winkler stack: a larger cap is pressed by the top below it, and the a
     auto st = drums();
     st.layers.push_back({0.5, 0.2, 0.5, 2500.0 * 0.05});
     st.traced = 0;
-    st.drive = stack_pulse(0.22);
+    st.drive = pulse(0.22, kStackPulse);
     const auto a = st.rest(1.5, 1e-3);
     INFO("largest " << largest(a));
     REQUIRE(largest(a) > 0.02);
     REQUIRE(largest(a) < 0.2);   // it rocks and comes back: no overturn to amplify round-off
     auto flipped = st;
-    flipped.drive = stack_pulse(-0.22);
+    flipped.drive = pulse(-0.22, kStackPulse);
     const auto b = flipped.rest(1.5, 1e-3);
     REQUIRE(a.theta.size() == b.theta.size());
     // 1e-3 of the swing: the mirrored cells are summed in another order, and rocking grows that
