@@ -172,6 +172,30 @@ void check_build_size(const Scene& scene, const RunLimits& limits) {
                     " (default half of the machine's memory; --memory-budget changes it)");
 }
 
+namespace {
+// every side planar and square to each side it shares an edge with, to rounding (1e-12)
+bool is_box(const std::array<Vec3, 8>& corners) {
+    std::array<Vec3, 6> normal;
+    for (int s = 0; s < 6; ++s) {
+        const auto& fc = kFaceCorners[s];
+        const Quad q{corners[fc[0]], corners[fc[1]], corners[fc[2]], corners[fc[3]]};
+        normal[s] = quad_centre_normal(q);
+        const Vec3 centre = 0.25 * (q[0] + q[1] + q[2] + q[3]);
+        const double size = (q[2] - q[0]).norm();
+        for (const auto& p : q)
+            if (std::abs(normal[s].dot(p - centre)) > 1e-12 * size) return false;
+    }
+    for (int s = 0; s < 6; ++s)
+        for (int o = s + 1; o < 6; ++o) {
+            int shared = 0;
+            for (int i : kFaceCorners[s])
+                for (int j : kFaceCorners[o]) shared += i == j;
+            if (shared == 2 && std::abs(normal[s].dot(normal[o])) > 1e-12) return false;
+        }
+    return true;
+}
+}  // namespace
+
 Block make_block(const BlockDef& def, const Scene& scene) {
     const Material& mat = scene.materials[def.material];
     const bool deformable = def.model == BlockModel::deformable && !def.fixed;
@@ -194,6 +218,7 @@ Block make_block(const BlockDef& def, const Scene& scene) {
         b.side_area[s] = quad_area(q);
         for (int i = 0; i < 4; ++i) b.min_edge = std::min(b.min_edge, (q[(i + 1) % 4] - q[i]).norm());
     }
+    b.box = !deformable && is_box(def.corners);
     // hitting points: the paper's scheme only (the overlap scheme cuts the faces as it goes)
     if (scene.contact.scheme == ContactScheme::paper) b.hits = hitting_points(b.mesh, scene.contact.grid_spacing);
     else b.hits.assign(b.mesh.faces.size(), {});
@@ -217,6 +242,12 @@ Block make_block(const BlockDef& def, const Scene& scene) {
         }
     } else {
         for (const auto& p : b.mesh.nodes) b.local.push_back(p - mp.centre);
+        for (int s = 0; s < 6; ++s) {
+            const auto& c = b.mesh.side_corners[size_t(s)];
+            const Quad q{b.local[size_t(c[0])], b.local[size_t(c[1])], b.local[size_t(c[2])], b.local[size_t(c[3])]};
+            b.side_normal_local[size_t(s)] = quad_centre_normal(q);
+            b.side_centre_local[size_t(s)] = 0.25 * (q[0] + q[1] + q[2] + q[3]);
+        }
         if (!def.fixed) {
             b.body.v = def.velocity;
             b.body.set_omega(def.angular_velocity);

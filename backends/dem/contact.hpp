@@ -50,6 +50,7 @@ struct SubTwist {
     double moment = 0.0;        ///< moment about the normal on the hitting block (spring and dashpot), N·m
     double damper = 0.0;        ///< its dashpot part, N·m
     Vec3 dir = Vec3::Zero();    ///< the pair's force per unit moment (along the second tangent), 1/m
+    Vec3 axis = Vec3::Zero();   ///< the unit normal it turns about
     /// on each block, the weights of the pair's first point less those of its second (one set of
     /// nodes: the face's element): the force dir·M spread by them is the couple
     NodeWeights hit, target;
@@ -105,12 +106,18 @@ struct SubForce {
     }
 };
 
+/// A penetration of this fraction of the smaller block's shortest edge is no longer a contact:
+/// the run stops (World::step)
+constexpr double kSankDepth = 0.25;
+
 /// Energies and counts of one contact evaluation.
 struct ContactTotals {
     double stored = 0.0;      ///< elastic energy in the normal and shear springs, J
     double dissipated = 0.0;  ///< this step: slip and dashpots, J
     int active = 0;           ///< penetrating hitting points
-    double worst_depth = 0.0; ///< penetration as a fraction of the smaller block's shortest edge
+    /// penetration as a fraction of the smaller block's shortest edge (exact from kSankDepth up;
+    /// below it the overlap scheme may give a bound)
+    double worst_depth = 0.0;
     int worst_hit = -1, worst_target = -1;  ///< the blocks of that deepest point
 };
 

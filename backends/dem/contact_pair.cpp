@@ -84,6 +84,14 @@ bool is_target(const std::vector<Block>& blocks, int h, int hit_side, int t, int
 
 SideFrames SideFrames::of(const Block& b) {
     SideFrames f;
+    if (!b.deformable) {
+        // rigid: the block-frame sides turned as its nodes were (update_nodes)
+        for (int k = 0; k < 6; ++k) {
+            f.normal[size_t(k)] = b.rotation * b.side_normal_local[size_t(k)];
+            f.centre[size_t(k)] = b.body.x + b.rotation * b.side_centre_local[size_t(k)];
+        }
+        return f;
+    }
     for (int k = 0; k < 6; ++k) {
         const Quad q = b.side_quad(k);
         f.normal[k] = quad_centre_normal(q);

@@ -150,8 +150,9 @@ void ContactSet::evaluate_overlap(std::vector<Block>& blocks, double dt, long be
                     // an equal one is bounded by its own edge, which moves with it, and not by the
                     // target's, whose edge force would come and go as rounding moves one past
                     // the other: the arches' joints)
+                    // (on a box those planes are the edges' own: the side's constraints hold them)
                     const double edge_tol = whole ? g.flush_tol : 0.0;
-                    for (int i = 0; i < 4; ++i) {
+                    for (int i = 0; i < 4 && !(whole && tb.box); ++i) {
                         const Vec3 a = nt.cross(flat[(i + 1) % 4] - flat[i]).normalized();
                         face_cons[size_t(nf++)] = Affine{a, -a.dot(flat[i]) + edge_tol};
                     }
@@ -305,20 +306,28 @@ void ContactSet::evaluate_overlap(std::vector<Block>& blocks, double dt, long be
                             if (!any) continue;
                             if (!(in.d1 > 0.0) || !(in.area > 0.0)) continue;
                             touched_face = tf;
-                            double dmax = 0.0;
                             // how deep a point is in the target: its distance to the nearest
                             // side (a sliver of a face crossing a side nearly square to it may lie
                             // up to the closer tolerance behind that side, yet just under the one
-                            // it entered through)
+                            // it entered through). Its depth behind the face bounds that: below
+                            // the depth that stops the run the bound is all the check needs
+                            const double smaller = std::min(hb.min_edge, tb.min_edge);
+                            double dmax = 0.0;
                             for (int ak = 0; ak < nrules * parts; ++ak)   // each rule's pieces
-                                for (int i = 0; i < polys[size_t(ak / parts)][size_t(ak % parts)].n; ++i) {
-                                    const Vec3& p = polys[size_t(ak / parts)][size_t(ak % parts)].p[size_t(i)];
-                                    double d = nt.dot(ct - p);
-                                    for (int o = 0; o < 6; ++o)
-                                        if (o != s) d = std::min(d, g.normal[o].dot(g.centre[o] - p));
-                                    dmax = std::max(dmax, d);
-                                }
-                            const double depth_ratio = dmax / std::min(hb.min_edge, tb.min_edge);
+                                for (int i = 0; i < polys[size_t(ak / parts)][size_t(ak % parts)].n; ++i)
+                                    dmax = std::max(dmax, nt.dot(ct - polys[size_t(ak / parts)][size_t(ak % parts)].p[size_t(i)]));
+                            if (dmax > kSankDepth * smaller) {
+                                dmax = 0.0;
+                                for (int ak = 0; ak < nrules * parts; ++ak)
+                                    for (int i = 0; i < polys[size_t(ak / parts)][size_t(ak % parts)].n; ++i) {
+                                        const Vec3& p = polys[size_t(ak / parts)][size_t(ak % parts)].p[size_t(i)];
+                                        double d = nt.dot(ct - p);
+                                        for (int o = 0; o < 6; ++o)
+                                            if (o != s) d = std::min(d, g.normal[o].dot(g.centre[o] - p));
+                                        dmax = std::max(dmax, d);
+                                    }
+                            }
+                            const double depth_ratio = dmax / smaller;
                             if (depth_ratio > tot.worst_depth) tot.worst_depth = depth_ratio, tot.worst_hit = c.hit_block, tot.worst_target = c.target_block;
                             // the sub-contact's anchor, found or new
                             const int cell = v * n + u;

@@ -15,6 +15,8 @@ double disc_polar_moment(double area) { return area * area / (2.0 * kPi); }
 double disc_friction_radius(double area) { return (2.0 / 3.0) * std::sqrt(area / kPi); }
 
 double twist_spin(const SubTwist& tw, const Block& hb, const Block& tb) {
+    // two rigid blocks: the pair's relative velocity over 2ρ along t2 is (ω_h − ω_t)·(t1 × t2)
+    if (!hb.deformable && !tb.deformable) return (hb.spin - tb.spin).dot(tw.axis);
     return (tw.hit.velocity(hb) - tw.target.velocity(tb)).dot(tw.dir);
 }
 
@@ -22,6 +24,13 @@ namespace {
 // the weights of x + a less those of x − a on block b (face `face`): both points lie on the same
 // element of the face, so the two share their nodes
 NodeWeights weight_difference(const Block& b, int face, const Vec3& x, const Vec3& a) {
+    if (!b.deformable) {
+        // rigid: the weights are affine in the point (node_weights), their difference linear in 2a
+        NodeWeights nw = node_weights(b, face, x);
+        const Vec3 l = b.corner_inverse * (2.0 * a);
+        nw.w = {-l.sum(), l[0], l[1], l[2]};
+        return nw;
+    }
     NodeWeights plus = node_weights(b, face, x + a);
     const NodeWeights minus = node_weights(b, face, x - a);
     for (int i = 0; i < plus.count; ++i) plus.w[size_t(i)] -= minus.w[size_t(i)];
@@ -47,6 +56,7 @@ void update_twist(SubTwist& tw, const TwistInput& in, const TwistLaw& law, const
     tw.hit = weight_difference(hb, hit_face, in.centroid, rho * t1);
     tw.target = weight_difference(tb, target_face, in.centroid, rho * t1);
     tw.dir = t2 / (2.0 * rho);
+    tw.axis = t1.cross(t2);
     const double spin_new = twist_spin(tw, hb, tb);
     if (in.lay) tw.angle = 0.0;
     const double spin = in.lay ? spin_new : 0.5 * (spin_old + spin_new);

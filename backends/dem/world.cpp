@@ -96,7 +96,7 @@ bool World::step() {
     }
     // a penetration of a quarter of a block is no longer a contact: the blocks pass through
     // each other (kn too soft for the loads, or the step too large)
-    if (last_contact_.worst_depth > 0.25) {
+    if (last_contact_.worst_depth > kSankDepth) {
         const Block& h = blocks_[last_contact_.worst_hit];
         const Block& t = blocks_[last_contact_.worst_target];
         std::ostringstream m;

@@ -32,9 +32,10 @@ struct Pair {
         test::add_box(scene, "A", Vec3(1, 1, 1), Vec3(0.1, 0.2, 0.5), false);
         test::add_box(scene, "B", Vec3(3, 3, 0.5), Vec3(0, 0, -0.25), true);
         for (const auto& d : scene.blocks) blocks.push_back(make_block(d, scene));
-        const Vec3 c(0.1, 0.2, 0.5);
-        for (size_t i = 0; i < blocks[0].x.size(); ++i)
-            blocks[0].v[i] = Vec3(1, 0, 0) + Vec3(0, 0, spin).cross(blocks[0].x[i] - c);
+        // a rigid block moves as its body: the node velocities follow (v + ω × arm from the centre)
+        blocks[0].body.v = Vec3(1, 0, 0);
+        blocks[0].body.set_omega(Vec3(0, 0, spin));
+        blocks[0].update_nodes();
         hit = face_along(blocks[0], -Vec3::UnitZ());
         target = face_along(blocks[1], Vec3::UnitZ());
     }

@@ -70,6 +70,14 @@ TEST_CASE("dem rigid body: rotation vectors and quaternions are inverse", "[dem]
         // the rotation by |r| about r/|r|
         if (r.norm() > 1e-6) CHECK(q.angularDistance(Quat(Eigen::AngleAxisd(r.norm(), r.normalized()))) < 1e-12);
     }
+    // a step's turn (under 1e-2 rad) by its series: the same quaternion to the rounding of 1 (its
+    // truncation is below 2.2e-17; a few roundings of the sums and products give ~1e-16)
+    for (const Vec3& r : {Vec3(0.0, 9.99e-3, 0.0), Vec3(4e-3, -5e-3, 5e-3), Vec3(1e-3, 2e-4, -3e-4), Vec3(0, 0, 1e-7)}) {
+        const Quat q = dem::quat_from_rotation_vector(r);
+        const Quat exact(Eigen::AngleAxisd(r.norm(), r.normalized()));
+        CHECK((q.coeffs() - exact.coeffs()).norm() < 3e-16);
+        CHECK(std::abs(q.norm() - 1.0) < 3e-16);
+    }
     // −q is the same rotation: the short way round
     const Quat q = dem::quat_from_rotation_vector(Vec3(0, 0, 0.4));
     const Quat neg(-q.w(), -q.x(), -q.y(), -q.z());
