@@ -98,11 +98,22 @@ struct SubForce {
             target.add(tb, -force);
             return;
         }
+        spread(hit, target, force, normal, hit_n, target_n, hb, tb);
+    }
+    /// the same for a force given by its parts (no SubForce built)
+    static void spread(const NodeWeights& hit, const NodeWeights& target, const Vec3& force, const Vec3& normal,
+                       const NodeWeights& hit_n, const NodeWeights& target_n, Block& hb, Block& tb) {
         const Vec3 fn = force.dot(normal) * normal;
         hit_n.add(hb, fn);
         target_n.add(tb, -fn);
         hit.add(hb, force - fn);
         target.add(tb, fn - force);
+    }
+    /// keep a force (`keep` given) or spread it at once
+    static void put(std::vector<SubForce>* keep, const NodeWeights& hit, const NodeWeights& target, const Vec3& force,
+                    const Vec3& normal, const NodeWeights& hit_n, const NodeWeights& target_n, Block& hb, Block& tb) {
+        if (keep) keep->push_back(SubForce{hit, target, force, normal, hit_n, target_n});
+        else spread(hit, target, force, normal, hit_n, target_n, hb, tb);
     }
 };
 

@@ -27,9 +27,7 @@ double apply_beyond(const BeyondCell& in, Block& hb, int f, Block& tb, int tf, s
     // a force on both blocks at one point; `normal` only names its normal part in the output (the
     // side it pushes on), both parts act at the same points
     auto put = [&](const NodeWeights& wh, const NodeWeights& wt, const Vec3& force, const Vec3& normal) {
-        const SubForce sub{wh, wt, in.scale * force, normal, wh, wt};
-        if (kept) kept->push_back(sub);
-        else sub.spread(hb, tb);
+        SubForce::put(kept, wh, wt, in.scale * force, normal, wh, wt, hb, tb);
     };
     // the hitting face's weights of a point of piece k: on a triangle, its barycentric weights,
     // each corner spread by the face's bilinear weights

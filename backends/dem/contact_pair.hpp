@@ -94,6 +94,20 @@ struct NodeWeights {
     int count = 0;               ///< nodes used (4 or 8)
     std::array<int, 8> node{};   ///< node indices
     std::array<double, 8> w{};   ///< weights, dimensionless
+    NodeWeights() = default;
+    /// copies the nodes in use (the rest stay zero): a copy of the whole would read back, in wide
+    /// loads, a set just written entry by entry, which stalls the store-to-load forwarding
+    NodeWeights(const NodeWeights& o) : count(o.count) {
+        for (int i = 0; i < count; ++i) node[size_t(i)] = o.node[size_t(i)], w[size_t(i)] = o.w[size_t(i)];
+    }
+    NodeWeights& operator=(const NodeWeights& o) {
+        count = o.count;
+        for (int i = 0; i < 8; ++i) {
+            node[size_t(i)] = i < count ? o.node[size_t(i)] : 0;
+            w[size_t(i)] = i < count ? o.w[size_t(i)] : 0.0;
+        }
+        return *this;
+    }
     /// the velocity of the block's material at the point, m/s
     Vec3 velocity(const Block& b) const {
         Vec3 v = Vec3::Zero();

@@ -498,9 +498,7 @@ void ContactSet::evaluate_overlap(std::vector<Block>& blocks, double dt, long be
                             anchor->shear_hit = wh;
                             anchor->shear_target = wt;
                             const Vec3 force = fn * nt + fs;
-                            const SubForce sub{wh, wt, force, nt, wh_n, wt_n};
-                            if (keep_forces) c.sub_forces.push_back(sub);
-                            else sub.spread(hb, tb);
+                            SubForce::put(keep_forces ? &c.sub_forces : nullptr, wh, wt, force, nt, wh_n, wt_n, hb, tb);
                             add_twist_forces(anchor->twist, nt, keep_forces ? &c.sub_forces : nullptr, hb, tb);
                             // where the polygon ends on a constraint fixed to the target (a target
                             // face's edge, another side's plane) with depth, U changes as the
@@ -544,9 +542,7 @@ void ContactSet::evaluate_overlap(std::vector<Block>& blocks, double dt, long be
                                     // that made energy as two columns pressed side by side
                                     const NodeWeights et = node_weights(tb, tf, e.point);
                                     // a push off the edge: all of it normal in the output
-                                    const SubForce edge{eh, et, e.force, e.force.normalized(), eh, et};
-                                    if (keep_forces) c.sub_forces.push_back(edge);
-                                    else edge.spread(hb, tb);
+                                    SubForce::put(keep_forces ? &c.sub_forces : nullptr, eh, et, e.force, e.force.normalized(), eh, et, hb, tb);
                                     // a closer constraint capped at the face's reach behind o moves
                                     // with the face's deepest corner p along −n_o: U's gradient there
                                     // is dU/db·(−n_o), a pair at p (the reach is o's plane to p,
@@ -555,9 +551,7 @@ void ContactSet::evaluate_overlap(std::vector<Block>& blocks, double dt, long be
                                         const Vec3& cp = hq[size_t(caps[size_t(cut)].corner)];
                                         const NodeWeights ch = node_weights(hb, c.hit_face, cp), ctw = node_weights(tb, tf, cp);
                                         const Vec3& no = g.normal[size_t(caps[size_t(cut)].side)];   // it pushes on o
-                                        const SubForce cap{ch, ctw, e.offset_gradient * no, no, ch, ctw};
-                                        if (keep_forces) c.sub_forces.push_back(cap);
-                                        else cap.spread(hb, tb);
+                                        SubForce::put(keep_forces ? &c.sub_forces : nullptr, ch, ctw, e.offset_gradient * no, no, ch, ctw, hb, tb);
                                     }
                                 }
                             }
@@ -589,9 +583,7 @@ void ContactSet::evaluate_overlap(std::vector<Block>& blocks, double dt, long be
                         const Vec3 x = centre + side * pair.offset;
                         const NodeWeights xh = node_weights(hb, c.hit_face, x), xt = node_weights(tb, touched_face, x);
                         const Vec3 force = side * pair.force;
-                        const SubForce couple{xh, xt, force, force.normalized(), xh, xt};
-                        if (keep_forces) c.sub_forces.push_back(couple);
-                        else couple.spread(hb, tb);
+                        SubForce::put(keep_forces ? &c.sub_forces : nullptr, xh, xt, force, force.normalized(), xh, xt, hb, tb);
                     }
                 }
             }
