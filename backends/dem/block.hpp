@@ -26,7 +26,8 @@ struct Block {
     double volume = 0.0;                      ///< m³
     double r_max = 0.0;                       ///< largest distance of a corner from the centre, m
     double min_edge = 0.0;                    ///< shortest edge of the block, m
-    bool box = false;                         ///< rigid, every side planar and square to its neighbours: a side's edges lie on their planes
+    /// rigid, every side planar and square to its neighbours: a side's edges lie on their planes
+    bool box = false;
 
     Mesh mesh;                                ///< nodes, elements, boundary faces and sides
     std::vector<Vec3> local;                  ///< rigid: nodes relative to the centre, block axes, m
@@ -36,7 +37,8 @@ struct Block {
     std::vector<std::vector<HitPoint>> hits;  ///< hitting points of each boundary face
     std::array<double, 6> side_area{};        ///< area of each side at t = 0, m²
 
-    Vec3 spin = Vec3::Zero();                 ///< rigid: the angular velocity the nodes' velocities were set with (update_nodes), world, rad/s
+    /// rigid: the angular velocity the nodes' velocities were set with (update_nodes), world, rad/s
+    Vec3 spin = Vec3::Zero();
     Mat3 rotation = Mat3::Identity();         ///< rigid: the pose's rotation the nodes were set from (update_nodes)
     std::array<Vec3, 6> side_normal_local{};  ///< rigid: each side's outward unit normal at its centre, block axes
     std::array<Vec3, 6> side_centre_local{};  ///< rigid: each side's centre relative to the centre, block axes, m

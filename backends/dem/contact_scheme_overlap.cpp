@@ -54,6 +54,7 @@ void ContactSet::evaluate_overlap(std::vector<Block>& blocks, double dt, long be
         ContactTotals& tot = c.totals;
         Block& hb = blocks[c.hit_block];
         Block& tb = blocks[c.target_block];
+        std::vector<SubForce>* keep = keep_forces ? &c.sub_forces : nullptr;   // forces kept, or spread at once
         for (auto& a : c.subs) a.seen = false;
         g.update(blocks, frames_, c.hit_block, c.target_block);
         const int hit_side = hb.mesh.face_side[c.hit_face];
@@ -243,7 +244,7 @@ void ContactSet::evaluate_overlap(std::vector<Block>& blocks, double dt, long be
                                 bc.target_face = &tq;
                                 bc.kn = law_.kn;
                                 bc.scale = r.weight;
-                                energy[size_t(a)] = apply_beyond(bc, hb, c.hit_face, tb, tf, keep_forces ? &c.sub_forces : nullptr);
+                                energy[size_t(a)] = apply_beyond(bc, hb, c.hit_face, tb, tf, keep);
                                 tot.stored += r.weight * energy[size_t(a)];
                             }
                             // each rule's clipped pieces and integrals; the cell's are their blend
@@ -316,19 +317,22 @@ void ContactSet::evaluate_overlap(std::vector<Block>& blocks, double dt, long be
                             // the depth that stops the run the bound is all the check needs
                             const double smaller = std::min(hb.min_edge, tb.min_edge);
                             double dmax = 0.0;
-                            for (int ak = 0; ak < nrules * parts; ++ak)   // each rule's pieces
-                                for (int i = 0; i < polys[size_t(ak / parts)][size_t(ak % parts)].n; ++i)
-                                    dmax = std::max(dmax, nt.dot(ct - polys[size_t(ak / parts)][size_t(ak % parts)].p[size_t(i)]));
+                            for (int ak = 0; ak < nrules * parts; ++ak) {   // each rule's pieces
+                                const ClipPolygon& poly = polys[size_t(ak / parts)][size_t(ak % parts)];
+                                for (int i = 0; i < poly.n; ++i) dmax = std::max(dmax, nt.dot(ct - poly.p[size_t(i)]));
+                            }
                             if (dmax > kSankDepth * smaller) {
                                 dmax = 0.0;
-                                for (int ak = 0; ak < nrules * parts; ++ak)
-                                    for (int i = 0; i < polys[size_t(ak / parts)][size_t(ak % parts)].n; ++i) {
-                                        const Vec3& p = polys[size_t(ak / parts)][size_t(ak % parts)].p[size_t(i)];
+                                for (int ak = 0; ak < nrules * parts; ++ak) {
+                                    const ClipPolygon& poly = polys[size_t(ak / parts)][size_t(ak % parts)];
+                                    for (int i = 0; i < poly.n; ++i) {
+                                        const Vec3& p = poly.p[size_t(i)];
                                         double d = nt.dot(ct - p);
                                         for (int o = 0; o < 6; ++o)
                                             if (o != s) d = std::min(d, g.normal[o].dot(g.centre[o] - p));
                                         dmax = std::max(dmax, d);
                                     }
+                                }
                             }
                             const double depth_ratio = dmax / smaller;
                             if (depth_ratio > tot.worst_depth) tot.worst_depth = depth_ratio, tot.worst_hit = c.hit_block, tot.worst_target = c.target_block;
@@ -501,8 +505,8 @@ void ContactSet::evaluate_overlap(std::vector<Block>& blocks, double dt, long be
                             anchor->shear_hit = wh;
                             anchor->shear_target = wt;
                             const Vec3 force = fn * nt + fs;
-                            SubForce::put(keep_forces ? &c.sub_forces : nullptr, wh, wt, force, nt, wh_n, wt_n, hb, tb);
-                            add_twist_forces(anchor->twist, nt, keep_forces ? &c.sub_forces : nullptr, hb, tb);
+                            SubForce::put(keep, wh, wt, force, nt, wh_n, wt_n, hb, tb);
+                            add_twist_forces(anchor->twist, nt, keep, hb, tb);
                             // where the polygon ends on a constraint fixed to the target (a target
                             // face's edge, another side's plane) with depth, U changes as the
                             // face moves over it: the boundary term of the gradient, on both blocks
@@ -545,7 +549,7 @@ void ContactSet::evaluate_overlap(std::vector<Block>& blocks, double dt, long be
                                     // that made energy as two columns pressed side by side
                                     const NodeWeights et = node_weights(tb, tf, e.point);
                                     // a push off the edge: all of it normal in the output
-                                    SubForce::put(keep_forces ? &c.sub_forces : nullptr, eh, et, e.force, e.force.normalized(), eh, et, hb, tb);
+                                    SubForce::put(keep, eh, et, e.force, e.force.normalized(), eh, et, hb, tb);
                                     // a closer constraint capped at the face's reach behind o moves
                                     // with the face's deepest corner p along −n_o: U's gradient there
                                     // is dU/db·(−n_o), a pair at p (the reach is o's plane to p,
@@ -554,7 +558,7 @@ void ContactSet::evaluate_overlap(std::vector<Block>& blocks, double dt, long be
                                         const Vec3& cp = hq[size_t(caps[size_t(cut)].corner)];
                                         const NodeWeights ch = node_weights(hb, c.hit_face, cp), ctw = node_weights(tb, tf, cp);
                                         const Vec3& no = g.normal[size_t(caps[size_t(cut)].side)];   // it pushes on o
-                                        SubForce::put(keep_forces ? &c.sub_forces : nullptr, ch, ctw, e.offset_gradient * no, no, ch, ctw, hb, tb);
+                                        SubForce::put(keep, ch, ctw, e.offset_gradient * no, no, ch, ctw, hb, tb);
                                     }
                                 }
                             }
@@ -586,7 +590,7 @@ void ContactSet::evaluate_overlap(std::vector<Block>& blocks, double dt, long be
                         const Vec3 x = centre + side * pair.offset;
                         const NodeWeights xh = node_weights(hb, c.hit_face, x), xt = node_weights(tb, touched_face, x);
                         const Vec3 force = side * pair.force;
-                        SubForce::put(keep_forces ? &c.sub_forces : nullptr, xh, xt, force, force.normalized(), xh, xt, hb, tb);
+                        SubForce::put(keep, xh, xt, force, force.normalized(), xh, xt, hb, tb);
                     }
                 }
             }

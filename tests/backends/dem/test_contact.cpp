@@ -52,7 +52,8 @@ TEST_CASE("dem contact: a uniform penetration gives kn·A·d and stores half kn�
 
 TEST_CASE("dem blocks: a box is told from other hexahedra", "[dem][contact]") {
     Scene s = test::stone_scene();
-    add_box(s, "box", Vec3(0.4, 0.2, 0.3), Vec3(1, 2, 3), false, Quat(Eigen::AngleAxisd(0.7, Vec3(1, 2, 3).normalized())));
+    const Quat turned(Eigen::AngleAxisd(0.7, Vec3(1, 2, 3).normalized()));
+    add_box(s, "box", Vec3(0.4, 0.2, 0.3), Vec3(1, 2, 3), false, turned);
     BlockDef wedge = s.blocks[0];   // a voussoir-like trapezoid: its top narrower than its bottom
     wedge.name = "wedge";
     wedge.shape = Shape::hexahedron;
