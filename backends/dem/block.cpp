@@ -25,8 +25,7 @@ void Block::update_nodes() {
     }
     const Mat3 r = body.q.toRotationMatrix();
     rotation = r;
-    // body.omega() with the rotation at hand (the same operations: the same bits)
-    const Vec3 w = fixed ? Vec3::Zero() : Vec3(r * (body.inv_inertia_body * (r.transpose() * body.L)));
+    const Vec3 w = fixed ? Vec3::Zero() : body.omega(r);
     spin = w;
     for (size_t i = 0; i < local.size(); ++i) {
         Vec3 arm = r * local[i];

@@ -5,10 +5,7 @@
 
 namespace cairn::dem {
 
-Vec3 RigidBody::omega() const {
-    Mat3 r = q.toRotationMatrix();
-    return r * (inv_inertia_body * (r.transpose() * L));
-}
+Vec3 RigidBody::omega() const { return omega(q.toRotationMatrix()); }
 
 void RigidBody::set_omega(const Vec3& w) {
     Mat3 r = q.toRotationMatrix();

@@ -19,6 +19,8 @@ struct RigidBody {
 
     /// angular velocity from the angular momentum at the current orientation, rad/s
     Vec3 omega() const;
+    /// the same, with the orientation's rotation matrix r already at hand
+    Vec3 omega(const Mat3& r) const { return r * (inv_inertia_body * (r.transpose() * L)); }
     /// set the angular momentum from an angular velocity (rad/s)
     void set_omega(const Vec3& w);
     /// kinetic energy, J
