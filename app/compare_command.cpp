@@ -93,7 +93,7 @@ int compare_command(const CompareOptions& options) {
     // on a terminal one progress line for all runs instead of a line per run; nothing otherwise
     plan.quiet = true;
     const bool show = !options.quiet && stderr_is_terminal();
-    if (!options.quiet) {
+    {  // a warning, not progress: --quiet keeps it
         std::vector<validation::Variant> variants;
         for (const auto& r : c.runs) variants.push_back(r.variant);
         std::cerr << scene_compare::long_run_note(c.scene, variants);

@@ -6,6 +6,7 @@
 #include <cstdio>
 
 #include "error.hpp"
+#include "output/number_format.hpp"
 #include "geometry/hexahedron.hpp"
 #include "geometry/overlap.hpp"
 
@@ -31,6 +32,10 @@ double contact_area(const Scene& scene) {
 }
 
 double gravity(const Scene& scene) { return scene.gravity.norm(); }
+
+std::string message_vector(const Vec3& v) {
+    return "[" + message_number(v.x()) + ", " + message_number(v.y()) + ", " + message_number(v.z()) + "]";
+}
 
 double joint_to_block_stiffness(const Scene& scene, int b) {
     const BlockDef& d = scene.blocks.at(size_t(b));

@@ -45,6 +45,8 @@ inline constexpr double kFrameRigidUnderDrive = 0.1;
 std::string flexible_block_reason(const Scene& scene, int b, bool deformable, double limit = kRigidAgainstJoints);
 /// |gravity|, m/s²
 double gravity(const Scene& scene);
+/// v as "[x, y, z]" for a message, 4 significant digits each
+std::string message_vector(const Vec3& v);
 /// index of the reference block among the free blocks (Sample::blocks order)
 int free_index(const Scene& scene, int block);
 /// index of probe `name`, or -1

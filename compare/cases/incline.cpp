@@ -55,10 +55,13 @@ void check_incline(const Scene& scene) {
     require_drive_modelled(scene, "incline", {false, true});
     const BlockDef& d = scene.blocks.at(size_t(scene.reference->block));
     const Plane p = plane(scene);
-    if (d.angular_velocity.norm() > 0.0 || (d.velocity - d.velocity.dot(p.down) * p.down).norm() > 1e-9 * d.velocity.norm())
+    // 1e-3 of the speed: a launch typed to 3-4 digits is along the line (as the plane's angle, 1e-3 rad)
+    const double off = (d.velocity - d.velocity.dot(p.down) * p.down).norm();
+    if (d.angular_velocity.norm() > 0.0 || off > 1e-3 * d.velocity.norm())
         throw Error(scene.source + ": reference.kind = \"incline\": blocks." + d.name +
                     ".velocity/angular_velocity: the incline's block is launched along the plane's fall line only (no "
-                    "spin, no speed across it or off the plane)");
+                    "spin, no speed across it or off the plane; down the line is " + message_vector(p.down) +
+                    ", the speed off it " + message_number(off) + " m/s)");
 }
 
 /// the launched block's displacement down the plane at the times `t`, m

@@ -59,10 +59,13 @@ std::function<Vec3(double)> plane_drive(const Scene& scene) {
 void check_newmark(const Scene& scene) {
     const Base p = base_plane(scene);
     const BlockDef& d = scene.blocks.at(size_t(scene.reference->block));
-    if (d.angular_velocity.norm() > 0.0 || std::abs(d.velocity.dot(p.n)) > 1e-9 * std::max(1.0, d.velocity.norm()))
+    // 1e-3 of the speed: a launch typed to 3-4 digits is along the base (as a plane's angle, 1e-3 rad)
+    const double off = std::abs(d.velocity.dot(p.n));
+    if (d.angular_velocity.norm() > 0.0 || off > 1e-3 * d.velocity.norm())
         throw Error(scene.source + ": reference.kind = \"newmark\": blocks." + d.name +
                     ".velocity/angular_velocity: Newmark's block is launched along the base only (no spin, no speed "
-                    "off the base's plane)");
+                    "off the base's plane; its normal is " + message_vector(p.n) + ", the speed along it " +
+                    message_number(off) + " m/s)");
     if (d.velocity.norm() > 0.0 && scene.contact.friction > rocking_ratio(scene))
         throw Error(scene.source + ": blocks." + d.name + ".velocity: launched with μ = " + message_number(scene.contact.friction) +
                     " above its b/h = " + message_number(rocking_ratio(scene)) +

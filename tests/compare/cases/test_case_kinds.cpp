@@ -353,6 +353,12 @@ TEST_CASE("every shipped scene passes its kind's check, a drive a kind's oracle 
     Scene across = incline_scene();
     across.blocks.at(size_t(across.reference->block)).velocity = Vec3(0, 1, 0);
     CHECK_THAT(refusal(across), Catch::Contains("launched along the plane's fall line only"));
+    // a launch typed to four digits is along the line (5e-4 of the speed across it), 2e-3 is not
+    const Vec3 down = Quat(Eigen::AngleAxisd(30.0 * M_PI / 180.0, Vec3::UnitY())) * Vec3::UnitX();
+    across.blocks.at(size_t(across.reference->block)).velocity = 2.0 * down + Vec3(0, 1e-3, 0);
+    CHECK(refusal(across).empty());
+    across.blocks.at(size_t(across.reference->block)).velocity = 2.0 * down + Vec3(0, 4e-3, 0);
+    CHECK_THAT(refusal(across), Catch::Contains("the speed off it 0.004 m/s"));
     // a load on the arch's crown
     Scene loaded = shipped("structures/arch_thick");
     LoadDef crown;
