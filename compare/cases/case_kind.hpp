@@ -47,11 +47,9 @@ public:
     std::vector<std::string> parameters() const override { return parameters_; }
     CaseAnalysis analyse(const Scene& scene, const std::vector<Sample>& samples, ContactKind contact) const override;
     std::vector<double> curve(const Scene& scene, ContactKind contact, const std::vector<double>& t) const override;
-    std::vector<std::string> contact_modes(const Scene& scene) const override { return modes_(scene); }
+    std::vector<std::string> contact_modes(const Scene& scene) const override;
     std::string event_label() const override { return event_; }
-    void check(const Scene& scene) const override {
-        if (check_) check_(scene);
-    }
+    void check(const Scene& scene) const override;
 
 private:
     std::string name_;

@@ -2,6 +2,7 @@
 #include <algorithm>
 
 #include "cases/case_kind.hpp"
+#include "cases/upright_frames.hpp"
 #include "error.hpp"
 #include "scene/reference_kinds.hpp"
 
@@ -41,12 +42,29 @@ FunctionKind::FunctionKind(std::string name, std::vector<std::string> parameters
     : name_(std::move(name)), parameters_(std::move(parameters)), analyse_(analyse), curve_(curve), modes_(modes),
       event_(std::move(event_label)), check_(check) {}
 
+namespace {
+
+/// the variant's contact with the reference block's divisions renamed as upright_frames renames its axes
+ContactKind upright_contact(const Scene& scene, ContactKind contact) {
+    if (scene.reference) contact.divisions = upright_divisions(scene, scene.reference->block, contact.divisions);
+    return contact;
+}
+
+}  // namespace
+
+// every kind sees the scene in upright frames (upright_frames.hpp): a box's frame z is its height
 CaseAnalysis FunctionKind::analyse(const Scene& scene, const std::vector<Sample>& samples, ContactKind contact) const {
-    return analyse_(scene, samples, contact);
+    return analyse_(upright_frames(scene), upright_samples(scene, samples), upright_contact(scene, contact));
 }
 
 std::vector<double> FunctionKind::curve(const Scene& scene, ContactKind contact, const std::vector<double>& t) const {
-    return curve_ ? curve_(scene, contact, t) : std::vector<double>{};
+    return curve_ ? curve_(upright_frames(scene), upright_contact(scene, contact), t) : std::vector<double>{};
+}
+
+std::vector<std::string> FunctionKind::contact_modes(const Scene& scene) const { return modes_(upright_frames(scene)); }
+
+void FunctionKind::check(const Scene& scene) const {
+    if (check_) check_(upright_frames(scene));
 }
 
 std::vector<std::string> rigid_contact_only(const Scene&) { return {"rigid"}; }

@@ -105,7 +105,9 @@ metrics::Series angle_series(const std::vector<Sample>& s, int f, const Vec3& ax
     double prev = 0.0, offset = 0.0;
     const Quat back = from.conjugate();
     for (size_t i = 0; i < s.size(); ++i) {
-        const Quat q = s[i].blocks.at(f).orientation * back;
+        Quat q = s[i].blocks.at(f).orientation * back;
+        // q and −q are one turn: the one with q_w ≥ 0, so that an unturned block reads 0, not 2π
+        if (q.w() < 0.0) q.coeffs() = -q.coeffs();
         // twist of q about the axis: 2 atan2(q_v·axis, q_w)
         double a = 2.0 * std::atan2(Vec3(q.x(), q.y(), q.z()).dot(axis), q.w());
         if (i > 0) {

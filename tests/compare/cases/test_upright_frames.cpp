@@ -1,0 +1,89 @@
+// the blocks re-read in upright frames (compare/cases/upright_frames.cpp), and the rotation angle
+// the kinds measure from a run (case_util's angle_series)
+#include <catch2/catch.hpp>
+
+#include <cmath>
+
+#include "cases/case_util.hpp"
+#include "cases/upright_frames.hpp"
+#include "geometry/hexahedron.hpp"
+
+using namespace cairn;
+
+namespace {
+
+BlockDef box(const Vec3& size, const Quat& q, const Vec3& at) {
+    BlockDef b;
+    b.name = "A";
+    b.size = size;
+    b.corners = box_corners(size);
+    b.orientation = q;
+    b.position = at;
+    b.mesh.divisions = {2, 3, 5};
+    return b;
+}
+
+}  // namespace
+
+TEST_CASE("upright frames: a box standing along its frame y is re-read with its height along z, its geometry the same",
+          "[cases]") {
+    Scene s;
+    s.gravity = Vec3(0, -9.81, 0);
+    // turned a little about the vertical, so that no frame axis is a world axis
+    s.blocks.push_back(box(Vec3(0.2, 1.0, 0.7), Quat(Eigen::AngleAxisd(0.3, Vec3::UnitY())), Vec3(1, 0.5, 2)));
+    LoadDef l;
+    l.block = 0;
+    l.point = Vec3(0.1, 0.5, -0.35);   // a top corner
+    s.loads.push_back(l);
+    const Scene u = cases::upright_frames(s);
+    const BlockDef &a = s.blocks[0], &b = u.blocks[0];
+    CHECK((b.orientation * Vec3::UnitZ()).dot(Vec3::UnitY()) == Approx(1.0).epsilon(1e-15));
+    CHECK(b.size.z() == 1.0);
+    // the frame axis along the height keeps its divisions (5 along the written y)
+    CHECK(b.mesh.divisions[2] == 3);
+    CHECK(b.mesh.divisions[0] * b.mesh.divisions[1] == 10);
+    for (size_t i = 0; i < 8; ++i)   // 1e-15 m: the same corners in the world (a turn of the frame only)
+        CHECK((a.position + a.orientation * a.corners[i] - (b.position + b.orientation * b.corners[i])).norm() < 1e-15);
+    CHECK((a.orientation * s.loads[0].point - b.orientation * u.loads[0].point).norm() < 1e-15);
+    // a block upside down is upright too; one already upright is copied to the bit
+    s.blocks[0] = box(Vec3(0.2, 0.7, 1.0), Quat(Eigen::AngleAxisd(M_PI / 2, Vec3::UnitX())), Vec3::Zero());
+    CHECK((cases::upright_frames(s).blocks[0].orientation * Vec3::UnitZ()).y() == Approx(1.0));
+    s.blocks[0] = box(Vec3(0.2, 0.7, 1.0), Quat(Eigen::AngleAxisd(-M_PI / 2, Vec3::UnitX())), Vec3::Zero());
+    const BlockDef kept = cases::upright_frames(s).blocks[0];
+    CHECK(kept.orientation.coeffs() == s.blocks[0].orientation.coeffs());
+    CHECK(kept.corners == s.blocks[0].corners);
+}
+
+TEST_CASE("angle series: q and −q read the same angle, an unturned block 0", "[cases]") {
+    std::vector<Sample> run(2);
+    for (auto& x : run) x.blocks.resize(1);
+    run[1].t = 1.0;
+    run[0].blocks[0].orientation.coeffs() = -Quat::Identity().coeffs();
+    run[1].blocks[0].orientation.coeffs() = -Quat(Eigen::AngleAxisd(0.3, Vec3::UnitY())).coeffs();
+    const auto th = cases::angle_series(run, 0, Vec3::UnitY());
+    CHECK(th.y[0] == 0.0);
+    CHECK(th.y[1] == Approx(0.3).epsilon(1e-14));
+}
+
+TEST_CASE("upright frames: a fixed base is read by its side facing the reference block, at any slope", "[cases]") {
+    // a 60° slope written Z-up, the block on its frame +z side: the base is kept as written (its
+    // frame x is nearer up, but the block rests on the steep side)
+    Scene s;
+    const Quat tilt(Eigen::AngleAxisd(60.0 * M_PI / 180.0, Vec3::UnitY()));
+    s.blocks.push_back(box(Vec3(6, 4, 0.5), tilt, Vec3::Zero()));
+    s.blocks.back().fixed = true;
+    s.blocks.push_back(box(Vec3(0.4, 0.4, 0.4), tilt, tilt * Vec3(0, 0, 0.45)));
+    s.reference = ReferenceDef{"newmark", 1, {}};
+    const Scene u = cases::upright_frames(s);
+    CHECK(u.blocks[0].orientation.coeffs() == s.blocks[0].orientation.coeffs());
+    CHECK(u.blocks[1].orientation.coeffs() == s.blocks[1].orientation.coeffs());
+    // a 10° slope written Y-up, turned about x: the side towards the block becomes the base's +z
+    s.gravity = Vec3(0, -9.81, 0);
+    const Quat y_tilt(Eigen::AngleAxisd(10.0 * M_PI / 180.0, Vec3::UnitX()));
+    s.blocks[0] = box(Vec3(6, 0.5, 4), y_tilt, Vec3::Zero());
+    s.blocks[0].fixed = true;
+    s.blocks[1] = box(Vec3(0.4, 0.4, 0.4), y_tilt, y_tilt * Vec3(0, 0.45, 0));
+    const BlockDef base = cases::upright_frames(s).blocks[0];
+    CHECK((base.orientation * Vec3::UnitZ()).isApprox(y_tilt * Vec3::UnitY(), 1e-15));
+    CHECK(base.size.z() == 0.5);
+}
