@@ -93,8 +93,8 @@ CaseAnalysis analyse_arch(const Scene& scene, const std::vector<Sample>& s, Cont
     if (v.count("stands"))
         r.metrics.push_back(info("stands (1) or collapses (0), as the scene states", "", stands ? 1.0 : 0.0,
                                  admissible ? 1.0 : 0.0, la));
-    Series z = probe_series(s, crown, 2, true);
-    for (double& y : z.y) y = -y;   // settlement: downward positive
+    Series z = rise_series(scene, s, crown, -1);
+    for (double& y : z.y) y = -y;   // settlement: along gravity positive
     r.measured = z;
     r.quantity = "settlement of the crown, m";
     const double end = s.back().t, half = 0.5 * end;

@@ -100,6 +100,21 @@ metrics::Series com_series(const std::vector<Sample>& s, int f, int c, bool rela
     return out;
 }
 
+Vec3 up_direction(const Scene& scene) {
+    const Vec3& g = scene.gravity;
+    if (g.x() == 0.0 && g.y() == 0.0 && g.z() < 0.0) return Vec3::UnitZ();
+    return -g.normalized();
+}
+
+metrics::Series rise_series(const Scene& scene, const std::vector<Sample>& s, int p, int f) {
+    const Vec3 up = up_direction(scene);
+    auto at = [&](const Sample& x) { return p >= 0 ? x.probes.at(size_t(p)) : x.blocks.at(size_t(f)).position; };
+    metrics::Series out{times(s), {}};
+    for (const auto& x : s)   // along z as the plain difference: the same bits as before for Z-up scenes
+        out.y.push_back(up == Vec3::UnitZ() ? at(x).z() - at(s.front()).z() : (at(x) - at(s.front())).dot(up));
+    return out;
+}
+
 metrics::Series angle_series(const std::vector<Sample>& s, int f, const Vec3& axis, const Quat& from) {
     metrics::Series out{times(s), {}};
     double prev = 0.0, offset = 0.0;

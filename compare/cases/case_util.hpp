@@ -92,6 +92,10 @@ void require_drive_modelled(const Scene& scene, const std::string& kind, DriveMo
 metrics::Series probe_series(const std::vector<Sample>& s, int p, int c, bool relative);
 /// component c of the centre of mass of free block f, minus its value at t = 0 when `relative`
 metrics::Series com_series(const std::vector<Sample>& s, int f, int c, bool relative);
+/// the unit vector against gravity (exactly +z for gravity along −z; zero without gravity)
+Vec3 up_direction(const Scene& scene);
+/// rise against gravity since the first sample, m: of probe p, or of free block f's centre where p < 0
+metrics::Series rise_series(const Scene& scene, const std::vector<Sample>& s, int p, int f);
 /// signed rotation angle (rad) of free block f about the unit world axis, from the orientation
 /// `from` (world; identity: from the world's axes), unwrapped to be continuous in time
 metrics::Series angle_series(const std::vector<Sample>& s, int f, const Vec3& axis, const Quat& from = Quat::Identity());

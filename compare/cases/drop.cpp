@@ -18,11 +18,9 @@ oracle::DampedDrop drop_oracle(const Scene& scene) {
 }
 
 /// height of the block's bottom above the contact plane (negative = penetration), from the
-/// probe node10 (or the centre of mass) relative to its start
+/// probe node10 (or the centre of mass) relative to its start, against gravity
 metrics::Series height_series(const Scene& scene, const std::vector<Sample>& s, double gap) {
-    int p = probe_index(scene, "node10");
-    metrics::Series h = p >= 0 ? probe_series(s, p, 2, true)
-                               : com_series(s, free_index(scene, scene.reference->block), 2, true);
+    metrics::Series h = rise_series(scene, s, probe_index(scene, "node10"), free_index(scene, scene.reference->block));
     for (double& y : h.y) y += gap;
     return h;
 }

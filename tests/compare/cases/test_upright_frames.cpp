@@ -1,12 +1,14 @@
-// the blocks re-read in upright frames (compare/cases/upright_frames.cpp), and the rotation angle
-// the kinds measure from a run (case_util's angle_series)
+// the blocks re-read in upright frames (compare/cases/upright_frames.cpp), the rotation angle the
+// kinds measure from a run (case_util's angle_series), and a rise measured against gravity
 #include <catch2/catch.hpp>
 
 #include <cmath>
 
+#include "cases/case_kind.hpp"
 #include "cases/case_util.hpp"
 #include "cases/upright_frames.hpp"
 #include "geometry/hexahedron.hpp"
+#include "scene/scene_io.hpp"
 
 using namespace cairn;
 
@@ -86,4 +88,41 @@ TEST_CASE("upright frames: a fixed base is read by its side facing the reference
     const BlockDef base = cases::upright_frames(s).blocks[0];
     CHECK((base.orientation * Vec3::UnitZ()).isApprox(y_tilt * Vec3::UnitY(), 1e-15));
     CHECK(base.size.z() == 0.5);
+}
+
+TEST_CASE("rest kind: a Y-up scene's penetration is measured against gravity, as in its Z-up world", "[cases]") {
+    // paper case (a) as a Y-up user writes it (x, y, z → x, z, −y; its cubes unturned), its run the
+    // oracle's penetration along −y: the same metrics as the Z-up scene's run along −z
+    const Scene s = load_scene(std::string(CAIRN_SOURCE_DIR) + "/scenarios/paper/stability.toml");
+    const Mat3 m = (Mat3() << 1, 0, 0, 0, 0, 1, 0, -1, 0).finished();
+    Scene y = s;
+    y.gravity = m * s.gravity;
+    for (auto& b : y.blocks) b.position = m * b.position;
+    for (auto& p : y.probes) p.point = m * p.point;
+    const auto& kind = cases::case_kind("rest", s.source);
+    std::vector<double> t;
+    for (int i = 0; i <= 500; ++i) t.push_back(1e-3 * i);
+    const auto pen = kind.curve(s, {}, t);
+    auto run = [&](const Scene& w, const Vec3& down) {
+        std::vector<Sample> out;
+        for (size_t i = 0; i < t.size(); ++i) {
+            Sample x;
+            x.t = t[i];
+            x.blocks.resize(1);
+            x.blocks[0].position = w.blocks.at(size_t(w.reference->block)).position + pen[i] * down;
+            x.probes.push_back(w.probes[0].point + pen[i] * down);   // where the block is; only its motion is read
+            out.push_back(x);
+        }
+        return out;
+    };
+    const auto z = kind.analyse(s, run(s, -Vec3::UnitZ()), {});
+    const auto w = kind.analyse(y, run(y, -Vec3::UnitY()), {});
+    REQUIRE(z.metrics.size() == 3);
+    REQUIRE(w.metrics.size() == z.metrics.size());
+    for (size_t k = 0; k < z.metrics.size(); ++k) {
+        INFO(z.metrics[k].name);
+        CHECK(z.metrics[k].pass());
+        CHECK(w.metrics[k].value == Approx(z.metrics[k].value).epsilon(1e-12));
+        CHECK(w.metrics[k].pass());
+    }
 }
