@@ -25,25 +25,26 @@ Mat3 turn_to(int k, double s) {
     return p;
 }
 
-/// a fixed box's side facing the centre of block `on` (the largest gap from a side's plane to the
-/// centre; +z kept on a tie within 1e-9 of the box): the side a block rests on, at any slope
-Mat3 facing_turn(const BlockDef& base, const BlockDef& on) {
+/// a fixed box's side that block `on` rests on: of the sides whose plane the centre of `on` lies
+/// beyond, the one facing most against gravity (a slab's top under a lintel it carries, a slope's
+/// face at any angle); +z kept on a tie within 1e-9, and where no side qualifies
+Mat3 facing_turn(const BlockDef& base, const BlockDef& on, const Vec3& up) {
     Vec3 c = Vec3::Zero();
     for (const auto& x : on.corners) c += x / 8.0;
     const Vec3 local = base.orientation.conjugate() * (on.position + on.orientation * c - base.position);
-    const Vec3 half = 0.5 * base.size;
+    const Vec3 half = 0.5 * base.size, up_local = base.orientation.conjugate() * up;
     int k = 2;
-    double s = 1.0, best = local.z() - half.z();
+    double s = 1.0, best = local.z() > half.z() ? up_local.z() : -2.0;
     for (int i = 0; i < 3; ++i)
         for (double sign : {1.0, -1.0})
-            if (sign * local[i] - half[i] > best + 1e-9 * half.maxCoeff()) best = sign * local[i] - half[i], k = i, s = sign;
+            if (sign * local[i] > half[i] && sign * up_local[i] > best + 1e-9) best = sign * up_local[i], k = i, s = sign;
     return turn_to(k, s);
 }
 
-/// the turn of a fixed box: its side facing the reference block (without one, its axis nearest up)
+/// the turn of a fixed box: its side the reference block rests on (without one, its axis nearest up)
 Mat3 fixed_turn(const Scene& scene, const BlockDef& d) {
     if (scene.reference && !scene.blocks.at(size_t(scene.reference->block)).fixed)
-        return facing_turn(d, scene.blocks.at(size_t(scene.reference->block)));
+        return facing_turn(d, scene.blocks.at(size_t(scene.reference->block)), -scene.gravity.normalized());
     return upright_turn(d, -scene.gravity.normalized());
 }
 

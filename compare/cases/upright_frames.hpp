@@ -1,7 +1,8 @@
 #pragma once
 /// A scene's boxes re-described in frames whose z is up: the same geometry, each box's frame axes
-/// renamed so that +z is a fixed box's side facing the reference block (the plane it rests on, at
-/// any slope) and a free box's axis nearest the first fixed block's top (up, on a level base). The reference kinds read a
+/// renamed so that +z is a fixed box's side the reference block rests on (of the sides it lies
+/// beyond, the one facing most against gravity: a slope's face at any angle) and a free box's axis
+/// nearest the first fixed block's top (up, on a level base). The reference kinds read a
 /// block's frame z as its height and a base's frame +z as its top; a Y-up scene whose boxes are
 /// written unturned (height along frame y) is then judged as the same scene written Z-up. General
 /// hexahedra are kept as written.

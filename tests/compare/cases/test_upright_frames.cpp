@@ -126,3 +126,25 @@ TEST_CASE("rest kind: a Y-up scene's penetration is measured against gravity, as
         CHECK(w.metrics[k].pass());
     }
 }
+
+TEST_CASE("upright frames: a base under a block it carries off its centre is read by its top, not its nearer side",
+          "[cases]") {
+    // a lintel 3 m long over a 0.5 m pillar's edge (its centre 1.5 m aside, 0.1 m above the top),
+    // written Z-up and Y-up: the pillar's top faces it in both (the side lies nearer its centre)
+    for (bool y_up : {false, true}) {
+        INFO((y_up ? "Y-up" : "Z-up"));
+        Scene s;
+        s.gravity = y_up ? Vec3(0, -9.81, 0) : Vec3(0, 0, -9.81);
+        const Vec3 pillar = y_up ? Vec3(0.5, 2.0, 0.5) : Vec3(0.5, 0.5, 2.0);
+        s.blocks.push_back(box(pillar, Quat::Identity(), Vec3::Zero()));
+        s.blocks.back().fixed = true;
+        const Vec3 lintel = y_up ? Vec3(3.0, 0.2, 0.5) : Vec3(3.0, 0.5, 0.2);
+        s.blocks.push_back(box(lintel, Quat::Identity(), y_up ? Vec3(1.5, 1.1, 0) : Vec3(1.5, 0, 1.1)));
+        s.reference = ReferenceDef{"pushover", 1, {}};
+        const Scene u = cases::upright_frames(s);
+        CHECK((u.blocks[0].orientation * Vec3::UnitZ()).isApprox(-s.gravity.normalized(), 1e-15));
+        CHECK((u.blocks[1].orientation * Vec3::UnitZ()).isApprox(-s.gravity.normalized(), 1e-15));
+        CHECK(u.blocks[0].size.z() == 2.0);
+        if (!y_up) CHECK(u.blocks[0].orientation.coeffs() == s.blocks[0].orientation.coeffs());
+    }
+}
