@@ -37,7 +37,11 @@ Mat3 facing_turn(const BlockDef& base, const BlockDef& on, const Vec3& up) {
     double s = 1.0, best = local.z() > half.z() ? up_local.z() : -2.0;
     for (int i = 0; i < 3; ++i)
         for (double sign : {1.0, -1.0})
-            if (sign * local[i] > half[i] && sign * up_local[i] > best + 1e-9) best = sign * up_local[i], k = i, s = sign;
+            if (sign * local[i] > half[i] && sign * up_local[i] > best + 1e-9) {
+                best = sign * up_local[i];
+                k = i;
+                s = sign;
+            }
     return turn_to(k, s);
 }
 
