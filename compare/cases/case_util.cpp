@@ -6,9 +6,9 @@
 #include <cstdio>
 
 #include "error.hpp"
-#include "output/number_format.hpp"
 #include "geometry/hexahedron.hpp"
 #include "geometry/overlap.hpp"
+#include "output/number_format.hpp"
 
 namespace cairn::cases {
 
