@@ -35,7 +35,8 @@ nlohmann::json run_json(const ReplayRun& r) {
     }
     nlohmann::json t = nlohmann::json::array();
     for (double x : r.t) t.push_back(short_number(x));
-    return {{"label", r.label}, {"blocks", blocks}, {"t", t}, {"poses", poses}};
+    const nlohmann::json up = {short_number(r.up.x()), short_number(r.up.y()), short_number(r.up.z())};
+    return {{"label", r.label}, {"up", up}, {"blocks", blocks}, {"t", t}, {"poses", poses}};
 }
 
 }  // namespace
@@ -43,6 +44,7 @@ nlohmann::json run_json(const ReplayRun& r) {
 ReplayRun replay_run(const std::string& label, const Scene& scene) {
     ReplayRun r;
     r.label = label;
+    if (scene.gravity.norm() > 0.0) r.up = (-scene.gravity.normalized()).array() + 0.0;   // + 0: no −0 on the page
     for (const auto& def : scene.blocks) {
         ReplayBlock b;
         b.name = def.name;

@@ -22,6 +22,7 @@ struct ReplayBlock {
 struct ReplayRun {
     std::string label;                      ///< shown above the view (e.g. the backend)
     std::vector<ReplayBlock> blocks;        ///< Scene::blocks order
+    Vec3 up = Vec3::UnitZ();                ///< the view's up: against the scene's gravity (z without gravity)
     std::vector<double> t;                  ///< frame times, s
     std::vector<std::vector<double>> poses; ///< per frame: x, y, z (m), qw, qx, qy, qz per free block
     long long stride = 1;                   ///< samples per frame (doubles when the frames pass kMaxReplayFrames)

@@ -57,9 +57,15 @@ function makeView(run, host) {
   renderer.setPixelRatio(window.devicePixelRatio || 1);
   const scene = new THREE.Scene();
   scene.background = new THREE.Color(0xf4f4f0);
-  scene.add(new THREE.HemisphereLight(0xffffff, 0x888888, 2.0));
+  // up against gravity (the run's `up`; z when absent): lights and camera placed as for a Z-up
+  // scene, turned with it
+  const up = run.up ? new THREE.Vector3(run.up[0], run.up[1], run.up[2]).normalize() : new THREE.Vector3(0, 0, 1);
+  const turn = new THREE.Quaternion().setFromUnitVectors(new THREE.Vector3(0, 0, 1), up);
+  const sky = new THREE.HemisphereLight(0xffffff, 0x888888, 2.0);
+  sky.position.copy(THREE.Object3D.DEFAULT_UP).applyQuaternion(turn);
+  scene.add(sky);
   const sun = new THREE.DirectionalLight(0xffffff, 1.5);
-  sun.position.set(1, -2, 3);
+  sun.position.set(1, -2, 3).applyQuaternion(turn);
   scene.add(sun);
 
   // blocks: fixed ones in world coordinates, free ones relative to their centre of mass
@@ -86,12 +92,13 @@ function makeView(run, host) {
   scene.updateMatrixWorld(true);
   box.setFromObject(scene);
 
-  // camera: z up, looking at the blocks from the front-right, far enough to see them all
+  // camera: up against gravity, looking at the blocks from the front-right as a Z-up scene is
+  // seen, far enough to see them all
   const centre = box.getCenter(new THREE.Vector3());
   const radius = Math.max(box.getSize(new THREE.Vector3()).length() / 2, 1e-3);
   const camera = new THREE.PerspectiveCamera(35, 1, radius / 100, radius * 100);
-  camera.up.set(0, 0, 1);
-  camera.position.copy(centre).add(new THREE.Vector3(1.2, -2.4, 1.0).multiplyScalar(radius * 1.3));
+  camera.up.copy(up);
+  camera.position.copy(centre).add(new THREE.Vector3(1.2, -2.4, 1.0).applyQuaternion(turn).multiplyScalar(radius * 1.3));
   const controls = new OrbitControls(camera, canvas);
   controls.target.copy(centre);
   controls.update();

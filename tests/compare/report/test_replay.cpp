@@ -63,3 +63,15 @@ TEST_CASE("a scene of many blocks keeps fewer frames, within bounds") {
     CHECK(replay_frame_limit(300) == kMaxReplayNumbers / (7 * 300));   // 476 frames of a 300-brick wall
     CHECK(replay_frame_limit(1000000) == kMinReplayFrames);
 }
+
+TEST_CASE("the replay's view stands up against the scene's gravity") {
+    Scene scene = one_block("A");
+    CHECK(replay_run("dem", scene).up == Vec3::UnitZ());
+    scene.gravity = Vec3(0, -9.81, 0);   // a Y-up scene
+    const ReplayRun run = replay_run("dem", scene);
+    CHECK(run.up == Vec3::UnitY());
+    scene.gravity = Vec3::Zero();         // none: z
+    CHECK(replay_run("dem", scene).up == Vec3::UnitZ());
+    if (!replay_available()) return;
+    CHECK(count(replay_html("t", {run}), "\"up\":[0.0,1.0,0.0]") == 1);
+}
