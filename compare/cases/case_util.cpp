@@ -110,8 +110,7 @@ metrics::Series rise_series(const Scene& scene, const std::vector<Sample>& s, in
     const Vec3 up = up_direction(scene);
     auto at = [&](const Sample& x) { return p >= 0 ? x.probes.at(size_t(p)) : x.blocks.at(size_t(f)).position; };
     metrics::Series out{times(s), {}};
-    for (const auto& x : s)   // along z as the plain difference: the same bits as before for Z-up scenes
-        out.y.push_back(up == Vec3::UnitZ() ? at(x).z() - at(s.front()).z() : (at(x) - at(s.front())).dot(up));
+    for (const auto& x : s) out.y.push_back((at(x) - at(s.front())).dot(up));
     return out;
 }
 

@@ -2,6 +2,8 @@
 
 #include <cmath>
 
+#include "cases/case_util.hpp"
+
 namespace cairn::cases {
 
 namespace {
@@ -48,8 +50,8 @@ Mat3 facing_turn(const BlockDef& base, const BlockDef& on, const Vec3& up) {
 /// the turn of a fixed box: its side the reference block rests on (without one, its axis nearest up)
 Mat3 fixed_turn(const Scene& scene, const BlockDef& d) {
     if (scene.reference && !scene.blocks.at(size_t(scene.reference->block)).fixed)
-        return facing_turn(d, scene.blocks.at(size_t(scene.reference->block)), -scene.gravity.normalized());
-    return upright_turn(d, -scene.gravity.normalized());
+        return facing_turn(d, scene.blocks.at(size_t(scene.reference->block)), up_direction(scene));
+    return upright_turn(d, up_direction(scene));
 }
 
 /// "up" for the free blocks: the top of the first fixed block (the kinds' base, a slope's normal),
@@ -60,15 +62,24 @@ Vec3 base_up(const Scene& scene) {
             if (d.shape != Shape::box) break;
             return d.orientation * (fixed_turn(scene, d) * Vec3::UnitZ());
         }
-    return -scene.gravity.normalized();
+    return up_direction(scene);
 }
 
-/// the turn of block b: a fixed box by fixed_turn, a free box by its axis nearest the base's up;
-/// a general hexahedron as written
-Mat3 block_turn(const Scene& scene, size_t b) {
-    const BlockDef& d = scene.blocks[b];
-    if (d.shape != Shape::box) return Mat3::Identity();
-    return d.fixed ? fixed_turn(scene, d) : upright_turn(d, base_up(scene));
+/// each block's turn: a fixed box by fixed_turn, a free box by its axis nearest the base's up; a
+/// general hexahedron as written (identity)
+std::vector<Mat3> block_turns(const Scene& scene) {
+    const Vec3 up = base_up(scene);
+    std::vector<Mat3> out;
+    for (const auto& d : scene.blocks)
+        out.push_back(d.shape != Shape::box ? Mat3::Identity() : d.fixed ? fixed_turn(scene, d) : upright_turn(d, up));
+    return out;
+}
+
+/// divisions along the written axes, renamed as the turn p renames the axes
+std::array<int, 3> renamed(const std::array<int, 3>& divisions, const Mat3& p) {
+    std::array<int, 3> out{};
+    for (int m = 0; m < 3; ++m) out[size_t(m)] = divisions[size_t(old_axis(p, m))];
+    return out;
 }
 
 }  // namespace
@@ -83,15 +94,15 @@ Mat3 upright_turn(const BlockDef& b, const Vec3& up) {
 
 Scene upright_frames(const Scene& scene) {
     Scene out = scene;
+    const std::vector<Mat3> turns = block_turns(scene);
     for (size_t b = 0; b < out.blocks.size(); ++b) {
-        const Mat3 p = block_turn(scene, b);
+        const Mat3& p = turns[b];
         if (p.isIdentity(0.0)) continue;
         BlockDef& d = out.blocks[b];
         for (auto& c : d.corners) c = p.transpose() * c;
         d.size = (p.transpose() * d.size).cwiseAbs();
         d.orientation = (d.orientation * Quat(p)).normalized();
-        const auto div = d.mesh.divisions;
-        for (int m = 0; m < 3; ++m) d.mesh.divisions[size_t(m)] = div[size_t(old_axis(p, m))];
+        d.mesh.divisions = renamed(d.mesh.divisions, p);
         for (auto& l : out.loads)
             if (l.block == int(b)) l.point = p.transpose() * l.point;
         for (auto& pr : out.probes)
@@ -101,13 +112,13 @@ Scene upright_frames(const Scene& scene) {
 }
 
 std::vector<Sample> upright_samples(const Scene& scene, const std::vector<Sample>& samples) {
+    const std::vector<Mat3> all = block_turns(scene);
     std::vector<Quat> turns;
     bool any = false;
     for (size_t b = 0; b < scene.blocks.size(); ++b)
         if (!scene.blocks[b].fixed) {
-            const Mat3 p = block_turn(scene, b);
-            any = any || !p.isIdentity(0.0);
-            turns.push_back(Quat(p));
+            any = any || !all[b].isIdentity(0.0);
+            turns.push_back(Quat(all[b]));
         }
     if (!any) return samples;
     std::vector<Sample> out = samples;
@@ -118,10 +129,7 @@ std::vector<Sample> upright_samples(const Scene& scene, const std::vector<Sample
 }
 
 std::array<int, 3> upright_divisions(const Scene& scene, int b, const std::array<int, 3>& divisions) {
-    const Mat3 p = block_turn(scene, size_t(b));
-    std::array<int, 3> out{};
-    for (int m = 0; m < 3; ++m) out[size_t(m)] = divisions[size_t(old_axis(p, m))];
-    return out;
+    return renamed(divisions, block_turns(scene).at(size_t(b)));
 }
 
 }  // namespace cairn::cases
