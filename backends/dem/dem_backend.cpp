@@ -212,9 +212,12 @@ public:
         else
             n.push_back("start: as given, not settled (" + settle_.why + ")");
         if (world_ && world_->early_refreshes() > 0)
-            n.push_back("warning: contact pairs were refreshed early " + std::to_string(world_->early_refreshes()) +
-                        " times because a block moved more than half the margin within the interval; "
-                        "raise run.contact_margin or lower run.contact_interval");
+            // not a warning: the early refresh keeps every pair (the results do not change), it
+            // only costs a refresh; the note says how to save them
+            n.push_back("contact pairs refreshed early (steps): " + std::to_string(world_->early_refreshes()) +
+                        " (a block moved more than half the margin within the interval; the pairs are "
+                        "kept, each costs a refresh: a larger run.contact_margin or smaller "
+                        "run.contact_interval saves them)");
         n.push_back(std::string("contact damping: ") + to_string(scene_.contact.damping_rule) + " " +
                     num(scene_.contact.damping));
         const bool undamped = scene_.contact.damping_rule == ContactDampingRule::none || !(scene_.contact.damping > 0.0);
