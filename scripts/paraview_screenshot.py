@@ -11,11 +11,10 @@ arrows along their normal force, of a length proportional to it. Run with ParaVi
 docs/visualisation.md describes the files and the options.
 """
 import argparse
+import json
 import math
 import os
 import sys
-
-from paraview import simple as pv
 
 
 def arguments():
@@ -31,12 +30,62 @@ def arguments():
                    help="m per N of normal force (default: the largest force as long as a fifth "
                         "of the scene's diagonal)")
     p.add_argument("--size", default="1200x800", help="picture size in pixels, WIDTHxHEIGHT")
-    p.add_argument("--azimuth", type=float, default=-35.0, help="deg, camera turned about z from -y")
+    p.add_argument("--azimuth", type=float, default=-35.0,
+                   help="deg, camera turned about the up axis from the front (-y in a Z-up scene)")
     p.add_argument("--elevation", type=float, default=20.0, help="deg, camera raised above the ground")
+    p.add_argument("--up", default=None,
+                   help="x,y,z: the scene's up (default: against the gravity of DIR/run.json, "
+                        "else z)")
     p.add_argument("--opacity", type=float, default=0.4, help="of the blocks, 0 to 1 (default 0.4)")
     p.add_argument("--speed-range", type=float, default=None,
                    help="m/s at the top of the colour scale (default: the largest speed at that time)")
     return p.parse_args()
+
+
+def turn_from_z(up):
+    """the rotation (3 rows) taking z onto the unit vector up by the shortest turn; the half turn
+    of an upside-down scene about y, as the 3-D replay's (three.js setFromUnitVectors)"""
+    c = up[2]   # cos of the turn: z·up
+    if c < -1.0 + 1e-12:
+        return [[-1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, -1.0]]
+    k = [-up[1], up[0], 0.0]   # z × up: axis times sin
+    f = 1.0 / (1.0 + c)       # Rodrigues: R = I + [k]x + [k]x²/(1 + c)
+    kx = [[0.0, -k[2], k[1]], [k[2], 0.0, -k[0]], [-k[1], k[0], 0.0]]
+    kx2 = [[sum(kx[i][m] * kx[m][j] for m in range(3)) for j in range(3)] for i in range(3)]
+    return [[(1.0 if i == j else 0.0) + kx[i][j] + f * kx2[i][j] for j in range(3)] for i in range(3)]
+
+
+def view_frame(gravity):
+    """(up, front): up against gravity (m/s², any length; z when zero) and the unit vector from the
+    scene's centre towards the camera before the azimuth and elevation: -y for a Z-up scene, turned
+    with the scene otherwise (a Y-up scene is seen from +z)"""
+    norm = math.sqrt(sum(g * g for g in gravity))
+    up = [0.0, 0.0, 1.0] if not norm > 0.0 else [-g / norm for g in gravity]
+    r = turn_from_z(up)
+    front = [-r[i][1] for i in range(3)]   # R·(−y)
+    return up, front
+
+
+def scene_up(a):
+    """the up vector: --up, else against the gravity in the run's run.json (DIR/vtk/SCENE.pvd ->
+    DIR/run.json), else z"""
+    if a.up is not None:
+        try:
+            up = [float(x) for x in a.up.split(",")]
+        except ValueError:
+            up = []
+        if len(up) != 3 or not math.sqrt(sum(u * u for u in up)) > 0.0:
+            sys.exit("--up %r: expected x,y,z, not all zero, e.g. 0,1,0" % a.up)
+        return [-u for u in up]   # as a gravity
+    run_json = os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(a.pvd))), "run.json")
+    try:
+        with open(run_json) as f:
+            gravity = json.load(f)["parameters"]["gravity"]
+        if len(gravity) == 3:
+            return [float(g) for g in gravity]
+    except (OSError, ValueError, KeyError, TypeError):
+        pass
+    return [0.0, 0.0, -1.0]
 
 
 def nearest(times, t):
@@ -50,6 +99,7 @@ def nearest(times, t):
 
 def main():
     a = arguments()
+    from paraview import simple as pv   # here: view_frame is usable without ParaView (tests)
     try:
         width, height = (int(x) for x in a.size.lower().split("x"))
     except ValueError:
@@ -119,12 +169,14 @@ def main():
     text.Color = [0.1, 0.1, 0.1]
     text.FontSize = 14
 
-    # a view from the front (-y), turned and raised, the scene filling the picture
+    # a view from the front (-y in a Z-up scene), up against gravity, turned and raised, the
+    # scene filling the picture
+    up, front = view_frame(scene_up(a))
     camera = view.GetActiveCamera()
     centre = [(x0 + x1) / 2, (y0 + y1) / 2, (z0 + z1) / 2]
     camera.SetFocalPoint(*centre)
-    camera.SetPosition(centre[0], centre[1] - 3.0 * diagonal, centre[2])
-    camera.SetViewUp(0.0, 0.0, 1.0)
+    camera.SetPosition(*[centre[i] + 3.0 * diagonal * front[i] for i in range(3)])
+    camera.SetViewUp(*up)
     camera.Azimuth(a.azimuth)
     camera.Elevation(a.elevation)
     view.ResetCamera(False)
