@@ -203,9 +203,9 @@ void require_tilted_release(const Scene& scene, const std::string& kind) {
         std::snprintf(why, sizeof why, "the rocking axis (%.4g, %.4g, %.4g) is not horizontal", axis.x(), axis.y(), axis.z());
     else if (std::abs(height.dot(axis)) > 1e-3 || std::abs(lean - theta0) > 1e-3)
         std::snprintf(why, sizeof why,
-                      "block %s's frame z (its height) leans %.5g rad from the vertical%s, not theta0 = %.5g rad about "
-                      "the rocking axis: the oracle releases the block leaning θ0 about that axis, its frame's z its "
-                      "height when upright",
+                      "block %s's height (of its axes, the one nearest its base's normal) leans %.5g rad from the "
+                      "vertical%s, not theta0 = %.5g rad about the rocking axis: the oracle releases the block "
+                      "leaning θ0 about that axis, its height vertical when upright",
                       d.name.c_str(), lean, std::abs(height.dot(axis)) > 1e-3 ? " and out of the plane across the axis" : "",
                       theta0);
     // the references rock the block on a fixed base: a free block under it (a column's lower drum)

@@ -116,8 +116,8 @@ void check_friction(const Scene& scene) {
     const Vec3 ax = b.orientation * Vec3::UnitX(), ay = b.orientation * Vec3::UnitY(), az = b.orientation * Vec3::UnitZ();
     const bool along_side = std::min(1 - std::abs(ax.dot(d)), 1 - std::abs(ay.dot(d))) <= 1e-9;
     if (std::abs(az.dot(up)) < 1 - 1e-9)
-        throw Error(key + "the block is not upright (its frame z, its height, is not along −gravity); the friction "
-                          "reference models a block on its base on a horizontal base, its height along its frame z");
+        throw Error(key + "the block is not upright (none of its axes is along −gravity: it is tilted); the friction "
+                          "reference models a block standing on one of its sides on a horizontal base");
     if (!slides && !along_side)
         throw Error(key + "the push is not along a side of the block; the stick reference models a block pushed "
                           "along one of its sides (the Winkler block in the push's vertical plane)");

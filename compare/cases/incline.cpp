@@ -13,7 +13,7 @@ namespace cairn::cases {
 namespace {
 
 /// the plane of the scene: the downhill unit direction and its angle θ to the horizontal (rad),
-/// from gravity and the top face (block-frame +z) of the support, the first fixed block; the
+/// from gravity and the face of the support (the first fixed block) the block rests on; the
 /// reference's `angle`, when given, must agree
 struct Plane {
     Vec3 down;

@@ -17,7 +17,7 @@ namespace {
 
 double rocking_ratio(const Scene& scene);
 
-/// the base's top face (the block-frame +z of the first fixed block): its outward unit normal n and
+/// the face of the base (the first fixed block) the block rests on: its outward unit normal n and
 /// two unit directions t1, t2 = n × t1 in it (world x and y on a level base under gravity along −z)
 struct Base {
     Vec3 n, t1, t2;
@@ -30,8 +30,8 @@ Base base_plane(const Scene& scene) {
         p.n = b.orientation * Vec3::UnitZ();
         // the plane must face up, against gravity (an incline flatter than 89.9°)
         if (!(scene.gravity.dot(p.n) < -std::cos(1.57) * scene.gravity.norm()))
-            throw Error(scene.source + ": reference.kind = \"newmark\": the top face (block-frame +z) of block '" + b.name +
-                        "' must face up against gravity, as a base the block rests on; it is at " +
+            throw Error(scene.source + ": reference.kind = \"newmark\": the side of block '" + b.name +
+                        "' that the block rests on must face up against gravity, as a base; it is at " +
                         message_number(std::acos(std::clamp(-scene.gravity.normalized().dot(p.n), -1.0, 1.0))) +
                         " rad to the upward vertical");
         Vec3 t1 = Vec3::UnitX() - Vec3::UnitX().dot(p.n) * p.n;

@@ -7,6 +7,7 @@
 #include "cases/case_kind.hpp"
 #include "cases/case_util.hpp"
 #include "cases/upright_frames.hpp"
+#include "error.hpp"
 #include "geometry/hexahedron.hpp"
 #include "scene/scene_io.hpp"
 
@@ -147,4 +148,34 @@ TEST_CASE("upright frames: a base under a block it carries off its centre is rea
         CHECK(u.blocks[0].size.z() == 2.0);
         if (!y_up) CHECK(u.blocks[0].orientation.coeffs() == s.blocks[0].orientation.coeffs());
     }
+}
+
+TEST_CASE("kinds' refusals name a block's height and the side it rests on, not a frame axis", "[cases]") {
+    // the kinds read boxes in re-read frames, so a refusal naming "frame z" would name an axis the
+    // user of a Y-up scene did not write: housner leaning other than theta0, a tilted block under
+    // slide
+    auto refusal = [](const std::string& kind, const Scene& scene) {
+        try {
+            cases::case_kind(kind, scene.source).check(scene);
+        } catch (const Error& e) {
+            return std::string(e.what());
+        }
+        return std::string();
+    };
+    auto names_frame = [](const std::string& m) {
+        return m.find("frame z") != std::string::npos || m.find("block-frame") != std::string::npos;
+    };
+    Scene h = load_scene(std::string(CAIRN_SOURCE_DIR) + "/scenarios/paper/rocking_housner.toml");
+    h.reference->values["theta0"] += 0.01;   // rad, past the 1e-3 rad the check allows
+    const std::string lean = refusal("housner", h);
+    INFO(lean);
+    CHECK(lean.find("height") != std::string::npos);
+    CHECK_FALSE(names_frame(lean));
+
+    Scene s = load_scene(std::string(CAIRN_SOURCE_DIR) + "/scenarios/paper/friction_slide.toml");
+    s.blocks.at(size_t(s.reference->block)).orientation = Quat(Eigen::AngleAxisd(0.3, Vec3::UnitX()));   // tilted 0.3 rad
+    const std::string tilted = refusal("slide", s);
+    INFO(tilted);
+    CHECK(tilted.find("tilted") != std::string::npos);
+    CHECK_FALSE(names_frame(tilted));
 }
