@@ -56,6 +56,7 @@ void ContactSet::evaluate_overlap(std::vector<Block>& blocks, double dt, long be
         Block& tb = blocks[c.target_block];
         std::vector<SubForce>* keep = keep_forces ? &c.sub_forces : nullptr;   // forces kept, or spread at once
         for (auto& a : c.subs) a.seen = false;
+        size_t hint = 0;   // where the next cell's anchor is looked for first
         g.update(blocks, frames_, c.hit_block, c.target_block);
         const int hit_side = hb.mesh.face_side[c.hit_face];
         const std::array<char, 6>& faces = g.faces(hit_side);
@@ -338,9 +339,15 @@ void ContactSet::evaluate_overlap(std::vector<Block>& blocks, double dt, long be
                             if (depth_ratio > tot.worst_depth) tot.worst_depth = depth_ratio, tot.worst_hit = c.hit_block, tot.worst_target = c.target_block;
                             // the sub-contact's anchor, found or new
                             const int cell = v * n + u;
+                            // (the cells come in the order of the last evaluation, so the one
+                            // after the last found is tried first: a scan of the whole list per
+                            // cell read n⁴ anchors a face, 5 % of a wall's step at n = 4)
                             SubAnchor* anchor = nullptr;
-                            for (auto& a : c.subs)
-                                if (a.cell == cell && a.target_face == tf) anchor = &a;
+                            if (hint < c.subs.size() && c.subs[hint].cell == cell && c.subs[hint].target_face == tf)
+                                anchor = &c.subs[hint];
+                            else
+                                for (auto& a : c.subs)
+                                    if (a.cell == cell && a.target_face == tf) anchor = &a;
                             const bool fresh = anchor == nullptr;
                             if (fresh) {
                                 c.subs.emplace_back();
@@ -349,6 +356,7 @@ void ContactSet::evaluate_overlap(std::vector<Block>& blocks, double dt, long be
                                 anchor = &c.subs.back();
                             }
                             anchor->seen = true;
+                            hint = size_t(anchor - c.subs.data()) + 1;
                             // the shear spring is a uniform traction ks·u over the clipped area: it
                             // acts at the area's centroid xc on the target plane, on both blocks,
                             // and its offset grows with the relative velocity there (the area's
