@@ -57,6 +57,26 @@ std::string flexible_block_reason(const Scene& scene, int b, bool deformable, do
     return "not judged: the deformable block " + scene.blocks.at(size_t(b)).name + buf;
 }
 
+double joint_to_block_shear(const Scene& scene, int b) {
+    const BlockDef& d = scene.blocks.at(size_t(b));
+    double lo = 1e300, hi = -1e300;
+    for (const auto& c : d.corners) lo = std::min(lo, c.z()), hi = std::max(hi, c.z());
+    const Material& m = scene.materials.at(size_t(d.material));
+    return scene.contact.ks * (hi - lo) * 2.0 * (1.0 + m.poisson) / m.young;
+}
+
+void show_if_flexible(const Scene& scene, const ContactKind& contact, std::vector<metrics::Metric>& metrics) {
+    const int b = scene.reference->block;
+    if (!contact.deformable || joint_to_block_stiffness(scene, b) <= kRigidUnderDrive) return;
+    char why[300];
+    std::snprintf(why, sizeof why,
+                  "not judged: the deformable block %s is compliant against its joints (kn·h/E = %.3g, above %.3g): "
+                  "its own vibration, which the rigid sliding block leaves out, takes part in its motion; ",
+                  scene.blocks.at(size_t(b)).name.c_str(), joint_to_block_stiffness(scene, b), kRigidUnderDrive);
+    for (auto& m : metrics)
+        if (m.judged()) m = metrics::info(m.name, m.unit, m.value, m.reference, why + m.basis);
+}
+
 int free_index(const Scene& scene, int block) {
     assert(block >= 0 && size_t(block) < scene.blocks.size());   // the loader resolved the name
     int k = 0;
@@ -328,11 +348,18 @@ metrics::Metric slip_while_held(const metrics::Series& s, double t0, double t1, 
         const std::string how = d.ringing > 0.25 * tol ? "the lines through its turning points" : "a straight-line fit";
         return metrics::absolute("slip while held", "m", d.drift, 0.0, tol, "drift over " + how + "; " + basis);
     }
-    char why[200];
-    std::snprintf(why, sizeof why,
-                  "not judged: it rings by ±%.3g m with fewer than two swings in the window, so a drift cannot be "
-                  "told from the ringing (run longer); ",
-                  d.ringing);
+    char why[300];
+    if (d.unsteady)
+        std::snprintf(why, sizeof why,
+                      "not judged: it rings unsteadily by ±%.3g m (its turning points do not lie along two lines: a "
+                      "response forced by a record, or a ringing that stops within the window), so a drift cannot be "
+                      "told from the ringing; ",
+                      d.ringing);
+    else
+        std::snprintf(why, sizeof why,
+                      "not judged: it rings by ±%.3g m with fewer than two swings in the window, so a drift cannot be "
+                      "told from the ringing (run longer); ",
+                      d.ringing);
     return metrics::info("slip while held", "m", d.drift, 0.0, why + basis);
 }
 

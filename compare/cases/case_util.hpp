@@ -7,6 +7,7 @@
 
 #include "analytic/oracles.hpp"
 #include "backend/backend.hpp"
+#include "cases/case_analysis.hpp"
 #include "metrics/metric.hpp"
 #include "metrics/signal.hpp"
 
@@ -43,6 +44,20 @@ inline constexpr double kFrameRigidUnderDrive = 0.1;
 /// why a deformable block's rocking is shown and not judged, or empty when its kn·h/E is within
 /// `limit` (kRigidAgainstJoints for its swings after an impact), or the variant's block is rigid
 std::string flexible_block_reason(const Scene& scene, int b, bool deformable, double limit = kRigidAgainstJoints);
+/// ks·h/G of block `b`: the joints' shear stiffness per unit area (ks, N/m³) against the block's
+/// own shear stiffness per unit area over its height h (frame z), G/h with G = E/(2(1 + ν));
+/// dimensionless
+double joint_to_block_shear(const Scene& scene, int b);
+/// the largest ks·h/G at which a deformable block's base shear is judged against a rigid block on
+/// its springs (stick): its own shear adds about 11 × ks·h/G % to its base centre's displacement (a
+/// 3.1 × 4.2 × 4.6 m block under 0.12 W at ks = 1.05e10: +0.04 / +0.44 / +4.4 / +44 % at
+/// ks·h/G = 0.0039 / 0.039 / 0.39 / 3.9, session 37), so 0.6 % here, a fifth of the 3 % tolerance
+inline constexpr double kRigidInShear = 0.05;
+/// turns the judged metrics of a deformable block compliant against its joints (kn·h/E above
+/// kRigidUnderDrive: a sliding block's own vibration, which the rigid sliding block leaves out,
+/// takes part in its slide: +6.6 % on a 2.5 m tall block at 2.25, +0.16 % at 0.225, session 37)
+/// into ones shown with the reason; a rigid variant's are left as they are
+void show_if_flexible(const Scene& scene, const ContactKind& contact, std::vector<metrics::Metric>& metrics);
 /// |gravity|, m/s²
 double gravity(const Scene& scene);
 /// v as "[x, y, z]" for a message, 4 significant digits each

@@ -2,8 +2,9 @@
 #include <cmath>
 
 #include "analytic/oracles.hpp"
-#include "cases/case_util.hpp"
 #include "cases/case_kind.hpp"
+#include "cases/case_util.hpp"
+#include "output/number_format.hpp"
 
 namespace cairn::cases {
 
@@ -40,8 +41,8 @@ CaseAnalysis analyse_drop(const Scene& scene, const std::vector<Sample>& s, Cont
     Series h = height_series(scene, s, o.gap);
     r.analytic = drop_curve(scene, {}, h.t);
     r.analytic_label = "1-DOF spring-dashpot oracle, K = kn·A";
-    const std::string oracle_note = "K = kn·A = " + std::to_string(o.stiffness) + " N/m, m = " +
-                                    std::to_string(o.mass) + " kg";
+    const std::string oracle_note = "K = kn·A = " + message_number(o.stiffness, 6) + " N/m, m = " +
+                                    message_number(o.mass, 6) + " kg";
     if (rest) {
         Series d = h;
         for (double& y : d.y) y = -y;
@@ -89,7 +90,7 @@ CaseAnalysis analyse_drop(const Scene& scene, const std::vector<Sample>& s, Cont
     if (!leave.empty() && touch.size() > 1) {
         double apex = max_value(h, leave[0], touch[1]);
         r.metrics.push_back(relative("rebound ratio", "", apex / o.gap, b.restitution * b.restitution, 0.02,
-                                     "e² with e = " + std::to_string(b.restitution) +
+                                     "e² with e = " + message_number(b.restitution, 6) +
                                          " (gravity + release rule); 2 % as the penetration"));
     } else {
         r.metrics.push_back(missing("rebound ratio", "", b.restitution * b.restitution, 0.02, Check::relative,

@@ -5,10 +5,11 @@
 
 #include "analytic/oracles.hpp"
 #include "analytic/winkler_block.hpp"
-#include "cases/case_util.hpp"
 #include "cases/case_kind.hpp"
+#include "cases/case_util.hpp"
 #include "error.hpp"
 #include "geometry/hexahedron.hpp"
+#include "output/number_format.hpp"
 
 namespace cairn::cases {
 
@@ -79,7 +80,7 @@ void check_friction(const Scene& scene) {
     for (const auto& l : scene.loads) sum += l.force;
     const Vec3 up = -scene.gravity.normalized();
     const double horizontal = (sum - sum.dot(up) * up).norm(), H = scene.reference->values.at("force");
-    const std::string key = scene.source + ": reference.force = " + std::to_string(H) + " N: ";
+    const std::string key = scene.source + ": reference.force = " + message_number(H, 6) + " N: ";
     // 1e-6 of the force: a value written to seven digits
     if (std::abs(sum.dot(up)) > 1e-6 * sum.norm() || std::abs(horizontal - H) > 1e-6 * std::max(H, horizontal)) {
         char why[200];
@@ -98,7 +99,7 @@ void check_friction(const Scene& scene) {
         const double h = r.dot(up);
         if (std::isnan(h0)) h0 = h;
         if (std::abs(h - h0) > 1e-6 * size)
-            throw Error(key + "its loads act at different heights (" + std::to_string(h0) + " and " + std::to_string(h) +
+            throw Error(key + "its loads act at different heights (" + message_number(h0, 6) + " and " + message_number(h, 6) +
                         " m above the centre of mass); the friction reference models one force at one height");
     }
     if (std::abs(twist) > 1e-6 * H * size) {
@@ -261,6 +262,12 @@ metrics::Metric base_shear_metric(const Scene& scene, const oracle::WinklerBlock
                       "not judged: it still rings by ±%.3g m about its drift (a block rocking on part of its base is "
                       "lightly damped by its contact springs), so the mean is not the static state",
                       held.ringing);
+    else if (contact.deformable && joint_to_block_shear(scene, scene.reference->block) > kRigidInShear)
+        std::snprintf(not_judged, sizeof not_judged,
+                      "not judged: the deformable block is compliant in shear against its joints (ks·h/G = %.3g, above "
+                      "%.3g): its own shear adds about %.2g %% to its base's, which the rigid block on springs leaves out",
+                      joint_to_block_shear(scene, scene.reference->block), kRigidInShear,
+                      11.0 * joint_to_block_shear(scene, scene.reference->block));
     else if (c < 3.0 * cell)
         std::snprintf(not_judged, sizeof not_judged,
                       "not judged: the contact zone (%.3g m) spans fewer than three of the contact's shear springs along "
@@ -324,7 +331,7 @@ CaseAnalysis analyse_friction(const Scene& scene, const std::vector<Sample>& s, 
     HeldDrift held;
     r.metrics.push_back(slip_while_held(u, t0, T, 0.05 * scale,
                                         "the second half after the ramp; 5 % of the quasi-static base shear " +
-                                            std::to_string(scale) + " m",
+                                            message_number(scale, 6) + " m",
                                         &held));
     if (contact.penalty) r.metrics.push_back(base_shear_metric(scene, wb, h, u_ref, u, t0, T, held, contact));
     return r;

@@ -7,6 +7,7 @@
 #include "cases/case_kind.hpp"
 #include "cases/case_util.hpp"
 #include "error.hpp"
+#include "output/number_format.hpp"
 
 namespace cairn::cases {
 
@@ -31,9 +32,9 @@ Plane plane(const Scene& scene) {
     const auto it = scene.reference->values.find("angle");
     // 1e-3 rad: an angle written to four decimals in degrees or radians
     if (it != scene.reference->values.end() && std::abs(it->second - p.angle) > 1e-3)
-        throw Error(scene.source + ": [reference] angle = " + std::to_string(it->second) +
+        throw Error(scene.source + ": [reference] angle = " + message_number(it->second, 6) +
                     " rad, but the top face of block '" + support->name + "' is inclined " +
-                    std::to_string(p.angle) + " rad to the horizontal");
+                    message_number(p.angle, 6) + " rad to the horizontal");
     return p;
 }
 
@@ -111,7 +112,7 @@ void judge_launch(const Scene& scene, const Plane& p, double v0, ContactKind con
     if (!half.empty()) r.event_time = half[0], r.has_event = true;
 }
 
-CaseAnalysis analyse_incline(const Scene& scene, const std::vector<Sample>& s, ContactKind contact) {
+CaseAnalysis judged_incline(const Scene& scene, const std::vector<Sample>& s, ContactKind contact) {
     using namespace metrics;
     const Plane p = plane(scene);
     const int b = scene.reference->block;
@@ -140,7 +141,14 @@ CaseAnalysis analyse_incline(const Scene& scene, const std::vector<Sample>& s, C
     const double elastic = block_mass(scene, b) * g * std::sin(p.angle) / (scene.contact.ks * contact_area(scene));
     r.metrics.push_back(slip_while_held(r.measured, 0.5 * T, T, 0.05 * elastic,
                                         "tan θ ≤ μ; the second half of the run; 5 % of the elastic base shear m g sin "
-                                        "θ/(ks A) = " + std::to_string(elastic) + " m, as the stick case"));
+                                        "θ/(ks A) = " + message_number(elastic, 6) + " m, as the stick case"));
+    return r;
+}
+
+/// the run judged, a deformable block compliant against its joints shown instead (show_if_flexible)
+CaseAnalysis analyse_incline(const Scene& scene, const std::vector<Sample>& s, ContactKind contact) {
+    CaseAnalysis r = judged_incline(scene, s, contact);
+    show_if_flexible(scene, contact, r.metrics);
     return r;
 }
 

@@ -51,7 +51,13 @@ struct HeldDrift {
                             ///< than the noise, else the slope of a straight-line fit; times the window
     double ringing = 0.0;   ///< half its peak-to-peak swing about that drift, signal units
     bool resolved = true;   ///< false: it rings by more than the noise with fewer than two turning
-                            ///< points of each kind in the window, so drift and ringing cannot be told apart
+                            ///< points of each kind in the window, or unsteadily (the midpoints of
+                            ///< its neighbouring maxima and minima scatter about their line by more
+                            ///< than a quarter of the ringing, or the maxima's line is not above the
+                            ///< minima's: a swing forced by a record), so drift and ringing cannot
+                            ///< be told apart
+    bool unsteady = false;  ///< not resolved for the second reason (ringing: then its largest swing
+                            ///< about a straight line)
 };
 
 /// the drift of s over t in [t0, t1]; `noise` (signal units, > 0) is the swing below which a

@@ -355,3 +355,81 @@ TEST_CASE("friction_stick: a built base displacement judged against the Winkler 
     auto h = cases::analyse_case(coarse, run, {true});
     CHECK_THAT(find(h, "base shear displacement").basis, Catch::Contains("fewer than three"));
 }
+
+TEST_CASE("newmark hold: a record that ends within the second half is judged on the rest after it", "[cases]") {
+    // earthquake/block_pulse_hold run to 1.2 s: its 0.45 g pulse ends at 0.701 s, past half the
+    // run. Built runs: the block swings with the pulse by up to ±0.4 µm, unevenly (the record's
+    // envelope), then rests. The judged window is the second half of the time after the pulse,
+    // where a held block lies still, and a creep there is read
+    Scene s = load_scene(std::string(CAIRN_SOURCE_DIR) + "/scenarios/earthquake/block_pulse_hold.toml");
+    s.run.duration = 1.2;
+    const double T = s.run.duration;
+    auto judge = [&](double creep_rate) {   // m/s, after the pulse
+        auto run = run_of(s, T, 1e-3, [&](double t) {
+            double x = 0.0;
+            if (t > 0.2 && t < 0.701) x = 4e-7 * std::sin(2 * M_PI * 9.0 * t) * std::sin(M_PI * (t - 0.2) / 0.501);
+            if (t >= 0.701) x = creep_rate * (t - 0.701);
+            return Vec3(x, 0, 0);
+        });
+        return cases::analyse_case(s, run, {true});
+    };
+    const auto still = judge(0.0);
+    const auto& held = find(still, "slip while held");
+    INFO(held.basis);
+    CHECK(std::abs(held.value) < 1e-12);
+    CHECK(std::string(held.verdict()) == "pass");
+    CHECK_THAT(held.basis, Catch::Contains("after the drive's end at 0.701 s"));
+    // a creep of 1 µm/s after the pulse: 0.25 µm over the 0.25 s window, far past 5 % of the
+    // elastic base shear (m·0.45 g/(ks·A) = 4.6 µm: 0.23 µm)
+    const auto creeping = judge(1e-6);
+    // (read along the drive's push, −x: the creep along +x reads negative)
+    CHECK(find(creeping, "slip while held").value == Approx(-1e-6 * 0.2495).epsilon(1e-2));
+    CHECK(std::string(find(creeping, "slip while held").verdict()) == "miss");
+}
+
+TEST_CASE("a deformable block compliant against its joints is shown, not judged, by the sliding kinds", "[cases]") {
+    // stick: paper case (c) with a stone 50 times softer, ks·h/G = 0.06 above 0.05: its own shear
+    // would add about 0.7 % to its base's, which the rigid block on springs leaves out. The same
+    // built run, at the oracle's answer, is judged for a rigid block and shown for a deformable one
+    Scene s = paper("friction_stick");
+    s.materials.at(size_t(s.blocks.at(size_t(s.reference->block)).material)).young /= 50.0;
+    const double W = 325.0 * 9.81, H = s.reference->values.at("force");
+    oracle::WinklerBlock wb{0.5, 0.5, 3e7, 3e7, 0.6, W};
+    wb.com_height = 0.25;
+    const double u_ref = wb.shear_displacement(H, 0.25), ramp = s.loads[0].ramp;
+    const auto run = run_of(s, s.run.duration, 1e-3, [&](double t) { return Vec3(t < ramp ? u_ref * t / ramp : u_ref, 0, 0); });
+    cases::ContactKind rigid_block, deformable_block;
+    deformable_block.deformable = true;
+    CHECK(cases::joint_to_block_shear(s, s.reference->block) == Approx(0.06).epsilon(1e-9));
+    CHECK(std::string(find(cases::analyse_case(s, run, rigid_block), "base shear displacement").verdict()) == "pass");
+    const auto shown = find(cases::analyse_case(s, run, deformable_block), "base shear displacement");
+    CHECK(std::string(shown.verdict()) == "info");
+    CHECK_THAT(shown.basis, Catch::Contains("compliant in shear against its joints (ks·h/G = 0.06"));
+
+    // newmark: earthquake/block_pulse_slide with kn·h/E = 1.33, above 1: a built run at the oracle's
+    // slide is judged for a rigid block, shown for a deformable one, every metric
+    Scene p = load_scene(std::string(CAIRN_SOURCE_DIR) + "/scenarios/earthquake/block_pulse_slide.toml");
+    p.materials.at(size_t(p.blocks.at(size_t(p.reference->block)).material)).young = p.contact.kn * 0.4 / (4.0 / 3.0);
+    REQUIRE(cases::joint_to_block_stiffness(p, p.reference->block) == Approx(4.0 / 3.0).epsilon(1e-9));
+    const auto& kind = cases::case_kind("newmark", p.source);
+    std::vector<double> t;
+    for (int i = 0; i <= 2000; ++i) t.push_back(1e-3 * i * p.run.duration / 2.0);
+    const auto slide = kind.curve(p, {}, t);
+    const auto built = run_of(p, p.run.duration, 1e-3, [&](double at) {
+        return Vec3(-metrics::interpolate(metrics::Series{t, slide}, at), 0, 0);   // along the push, −x
+    });
+    const auto judged = cases::analyse_case(p, built, rigid_block);
+    const auto shown_all = cases::analyse_case(p, built, deformable_block);
+    REQUIRE(judged.metrics.size() == shown_all.metrics.size());
+    int was_judged = 0;
+    for (size_t k = 0; k < judged.metrics.size(); ++k) {
+        INFO(judged.metrics[k].name << ": " << judged.metrics[k].basis);
+        if (!judged.metrics[k].judged()) continue;
+        ++was_judged;
+        CHECK(judged.metrics[k].pass());
+        CHECK(std::string(shown_all.metrics[k].verdict()) == "info");
+        CHECK(shown_all.metrics[k].value == judged.metrics[k].value);
+        CHECK_THAT(shown_all.metrics[k].basis, Catch::Contains("compliant against its joints (kn·h/E = 1.33"));
+    }
+    CHECK(was_judged == 2);   // the largest and the final slide
+}

@@ -140,3 +140,31 @@ TEST_CASE("held drift: a fast ringing on a forced swing does not pass for turnin
         CHECK(d.ringing == Approx(1.2e-6).epsilon(0.02));
     }
 }
+
+TEST_CASE("held drift: a swing forced by a record is not read as a drift, a decaying ringing is", "[metrics]") {
+    // a held block under a record: it follows the drive to either side and back, its swings
+    // growing and dying with the record (two bursts of different sizes and signs), about a steady
+    // mean. Lines through its turning points would slope with the bursts' envelope: not resolved
+    Series forced;
+    for (double t = 0.0; t <= 2.0 + 1e-12; t += 1e-3) {
+        const double burst = 2e-6 * std::exp(-std::pow((t - 1.2) / 0.1, 2)) - 1.5e-6 * std::exp(-std::pow((t - 1.6) / 0.08, 2));
+        forced.t.push_back(t), forced.y.push_back(burst + 1e-7 * std::sin(2 * M_PI * 40.0 * t));
+    }
+    const auto f = held_drift(forced, 1.0, 2.0, 4e-9);
+    CHECK_FALSE(f.resolved);
+    CHECK(f.unsteady);
+    CHECK(f.ringing > 1e-6);   // the largest swing about a straight line, as reported
+    // a ringing that decays (ζ = 0.05 at 6 Hz) about a steady mean is resolved, with no drift read
+    // into it, and a creep under it is read (1e-2: the decay tilts the turning points' lines
+    // alike, and their mean slope leaves a part of a per cent)
+    for (const double rate : {0.0, 2e-6}) {
+        Series decay;
+        for (double t = 0.0; t <= 2.0 + 1e-12; t += 1e-3)
+            decay.t.push_back(t), decay.y.push_back(5e-6 * std::exp(-0.05 * 2 * M_PI * 6.0 * t) * std::cos(2 * M_PI * 6.0 * t) + rate * t);
+        const auto d = held_drift(decay, 1.0, 2.0, 4e-9);
+        INFO("creep rate " << rate);
+        REQUIRE(d.resolved);
+        CHECK_FALSE(d.unsteady);
+        CHECK(d.drift == Approx(rate * 1.0).margin(2e-2 * 5e-6 * std::exp(-0.05 * 2 * M_PI * 6.0)));
+    }
+}
