@@ -130,7 +130,7 @@ HeldDrift held_drift(const Series& s, double t0, double t1, double noise) {
         if (s.t[i] >= t0 && s.t[i] <= t1) w.t.push_back(s.t[i]), w.y.push_back(s.y[i]);
     HeldDrift r;
     if (w.t.size() < 2) return r;
-    const double span = w.t.back() - w.t.front(), mid = 0.5 * (w.t.front() + w.t.back());
+    const double span = w.t.back() - w.t.front();
     const auto line = polyfit(w, 1);
     for (size_t i = 0; i < w.t.size(); ++i) r.ringing = std::max(r.ringing, std::abs(w.y[i] - line[0] - line[1] * w.t[i]));
     r.drift = line[1] * span;
@@ -151,6 +151,12 @@ HeldDrift held_drift(const Series& s, double t0, double t1, double noise) {
         return r;
     }
     // each kind's line, at the window's middle, its slope, and the rms scatter of its points about it
+    // (its value at the turns' mean time: a ringing that decays within the window has its turns
+    // early, and its lines, extrapolated to the window's middle, may cross there)
+    double turns_mid = 0.0;
+    for (const auto& e : hi) turns_mid += e.t;
+    for (const auto& e : lo) turns_mid += e.t;
+    turns_mid /= double(hi.size() + lo.size());
     struct Line {
         double at_mid, slope, scatter;
     };
@@ -160,7 +166,7 @@ HeldDrift held_drift(const Series& s, double t0, double t1, double noise) {
         const auto c = polyfit(p, 1);
         double sq = 0.0;
         for (const auto& x : e) sq += std::pow(x.y - c[0] - c[1] * x.t, 2);
-        return Line{c[0] + c[1] * mid, c[1], std::sqrt(sq / double(e.size()))};
+        return Line{c[0] + c[1] * turns_mid, c[1], std::sqrt(sq / double(e.size()))};
     };
     const Line top = fit(hi), bottom = fit(lo);
     const double about_line = r.ringing;   // the largest swing about the straight line
