@@ -20,6 +20,9 @@ namespace cairn::cases {
 namespace {
 
 constexpr double kDefaultThreshold = 0.05;   // rad: well past any quasi-static equilibrium
+// rad: a push this close to a layer's side is along it, as the other kinds take an angle written
+// to four decimals in degrees (a direction or a turn written to six digits is 1e-6 off)
+constexpr double kSideAngle = 1e-3;
 
 /// the rotation angle (rad) of free block f from its orientation at t = 0
 metrics::Series rotation_series(const std::vector<Sample>& s, int f) {
@@ -146,8 +149,9 @@ std::optional<oracle::BlockStack> centred_stack(const Scene& scene, std::string*
     if (!axis) return refuse("blocks: no free block stands with a horizontal axis");
     const Vec3 up = -scene.gravity.normalized(), across = up.cross(*axis);
     const double angle = std::atan2(push->dot(across), push->dot(*axis));
-    // along one of the layers' axes (0 or 1), or -1 for a push at an angle to both
-    const int push_axis = std::abs(std::sin(angle)) < 1e-9 ? 0 : std::abs(std::cos(angle)) < 1e-9 ? 1 : -1;
+    // along one of the layers' axes (0 or 1), or -1 for a push at an angle to both (within
+    // kSideAngle: a direction or a turn written to six digits)
+    const int push_axis = std::abs(std::sin(angle)) < kSideAngle ? 0 : std::abs(std::cos(angle)) < kSideAngle ? 1 : -1;
     const auto layers = layers_of(scene, *axis);
     if (layers.empty()) return refuse("blocks: no free block");
     const LayerBounds& first = layers.front();
@@ -158,13 +162,16 @@ std::optional<oracle::BlockStack> centred_stack(const Scene& scene, std::string*
         const double box = (l.hi[0] - l.lo[0]) * (l.hi[1] - l.lo[1]) * (l.hi[2] - l.lo[2]);
         if (std::abs(l.volume - box) > 1e-3 * box)
             return refuse(layer + "has gaps or blocks not square to each other (not one full box)");
-        if (k > 0 && std::abs(l.lo[2] - layers[k - 1].hi[2]) > 1e-6 * height)
+        // within 1e-3 of the thinner layer's height, as the first on its base: positions written
+        // to six digits leave gaps of microns, which the contact closes at once
+        if (k > 0 && std::abs(l.lo[2] - layers[k - 1].hi[2]) >
+                         1e-6 * height + 1e-3 * std::min(l.hi[2] - l.lo[2], layers[k - 1].hi[2] - layers[k - 1].lo[2]))
             return refuse(layer + "does not rest on the one below");
         // a course of several blocks turns as one only where each of them spans the course along
         // the push (a wall pushed out of its plane); pushed across their head joints, or at an
         // angle to them, its blocks lean on each other and rock apart, which the layers do not model
         if (l.blocks > 1 &&
-            (push_axis < 0 || l.thinnest[push_axis] < (1 - 1e-6) * (l.hi[push_axis] - l.lo[push_axis])))
+            (push_axis < 0 || l.thinnest[push_axis] < (1 - 1e-3) * (l.hi[push_axis] - l.lo[push_axis])))
             return refuse(layer + "holds several blocks that do not each span it along the push (pushed across "
                                   "their joints they rock apart; the layers turn as one only pushed along their joints)");
         for (int a : {0, 1})   // centred on the first layer's vertical axis
@@ -199,7 +206,7 @@ namespace {
 /// oracle's monolith turns about an edge; anything else is read as a block assembly
 std::optional<oracle::BlockStack> stack_along_a_side(const Scene& scene) {
     auto stack = centred_stack(scene);
-    if (stack && std::min(std::abs(std::sin(stack->push_angle)), std::abs(std::cos(stack->push_angle))) > 1e-9)
+    if (stack && std::min(std::abs(std::sin(stack->push_angle)), std::abs(std::cos(stack->push_angle))) >= kSideAngle)
         stack.reset();
     return stack;
 }

@@ -152,3 +152,20 @@ TEST_CASE("pushover reference: a scene neither the stack oracle nor the limit an
     pushed.loads.push_back(extra);
     CHECK_THAT(refusal(pushed), Catch::Contains("[loads]: a load on block 'D2'"));
 }
+
+TEST_CASE("scene stack: a column written to six digits is still a stack pushed along its side", "[compare][stack]") {
+    // positions and the record's direction as a user types them from a turned scene: the drums
+    // 3 µm apart and the push 1e-6 rad off their faces (before, a gap above 1e-6 of the height or
+    // an angle above 1e-9 rad read it as an assembly, and dem lost its Winkler stack oracle)
+    Scene s = column(Vec3(1.0, 1e-6, 0.0).normalized());
+    s.blocks[1].position.z() += 3e-6;
+    s.blocks[2].position.z() += 6e-6;
+    const auto stack = cases::centred_stack(s);
+    REQUIRE(stack);
+    CHECK(stack->layers.size() == 3);
+    CHECK(std::abs(stack->push_angle) < 1e-5);
+    CHECK(stack->rigid_multiplier() == Approx(0.4 / 1.5).epsilon(1e-4));
+    // a gap of 1 mm on a 0.5 m drum (2e-3 of it) is a gap: refused
+    s.blocks[2].position.z() += 1e-3;
+    CHECK_FALSE(cases::centred_stack(s));
+}
