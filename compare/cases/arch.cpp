@@ -105,8 +105,9 @@ CaseAnalysis analyse_arch(const Scene& scene, const std::vector<Sample>& s, Cont
     const double first = at(half), last = z.y.back();
     if (!stands) {
         r.metrics.push_back(at_least("crown settlement", "m", last, t,
-                                     "thinner than the limit-analysis minimum (compare/analytic): no thrust line fits, "
-                                     "a 5-hinge mechanism forms and the crown falls by more than the thickness"));
+                                     "no thrust state (compare/analytic): thinner than the limit-analysis minimum, "
+                                     "a 5-hinge mechanism forms, or joints of too low a friction slide; the crown "
+                                     "falls by more than the thickness"));
         auto fall = crossings(z, t, Crossing::up);
         if (!fall.empty()) r.event_time = fall.front(), r.has_event = true;
         return r;
@@ -132,12 +133,20 @@ CaseAnalysis analyse_arch(const Scene& scene, const std::vector<Sample>& s, Cont
                       "whose thrust passes there turns by about 2N/(kn·D·(3s)²) = %.3g rad (N = half the arch's "
                       "weight), and the crown moves by about %.3g m",
                       h.margin, scene.contact.kn, h.rotation, h.drift);
-        judged = h.drift <= kHingeShare * h.margin;
+        // no margin (the scene says it stands where no thrust line keeps off the edges): nothing
+        // to measure the hinging against, so not judged (0 ≤ 15 % of 0 passed before)
+        judged = h.margin > 0.0 && h.drift <= kHingeShare * h.margin;
         const std::string share = fixed_text(100 * kHingeShare, 0) + " % of s";
-        hinged = judged ? std::string(why) + ", within " + share
-                        : std::string("not judged: ") + why + ", more than " + share +
-                              ": the joints' compliance decides whether it stands, which the rigid-block analysis "
-                              "leaves out (a stiffer kn brings it back)";
+        if (judged)
+            hinged = std::string(why) + ", within " + share;
+        else if (!(h.margin > 0.0))
+            hinged = std::string("not judged: ") + why +
+                     ": no thrust line keeps off the joints' edges, so nothing bounds their hinging (the rigid-block "
+                     "analysis finds no margin where the scene says the arch stands)";
+        else
+            hinged = std::string("not judged: ") + why + ", more than " + share +
+                     ": the joints' compliance decides whether it stands, which the rigid-block analysis leaves out (a "
+                     "stiffer kn brings it back)";
     }
     if (!judged) {
         r.metrics.push_back(info("crown settlement", "m", last, 0.0, hinged + "; " + settles));

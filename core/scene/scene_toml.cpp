@@ -69,8 +69,11 @@ std::string scene_toml(const Scene& scene, const std::string& comment) {
         << num(c.friction) << "\n";
     if (c.damping_rule == ContactDampingRule::ratio) out << "damping_ratio = " << num(c.damping) << "\n";
     if (c.damping_rule == ContactDampingRule::time) out << "damping_time = " << num(c.damping) << "   # s\n";
+    // the scheme always: the loader's default is not the one every scene asks for
     if (c.scheme == ContactScheme::overlap)
         out << "scheme = \"overlap\"\nsubdivision = " << c.subdivision << "   # sub-contacts per edge of a face\n";
+    else
+        out << "scheme = \"paper\"\ngrid_spacing = " << num(c.grid_spacing) << "   # m, the hitting grid\n";
     out << "\n" << blocks_toml(scene, scene.materials.empty() ? "stone" : scene.materials.front().name);
     return out.str();
 }

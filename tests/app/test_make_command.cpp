@@ -192,6 +192,23 @@ TEST_CASE("cairn make arch --reference limit-analysis: a pointed or segmental ar
     CHECK_THAT(seg.out, Contains("stands = 1"));
 }
 
+TEST_CASE("cairn make arch --reference limit-analysis: a round arch thick enough for a thrust line falls on "
+          "joints of low friction",
+          "[app][make]") {
+    const auto dir = fresh_dir("make_arch_friction");
+    // 15 voussoirs at t/R 0.16, 1.5 times the least t/R of their thrust line (0.1063), which
+    // leaves friction out: at μ 0.7 the blocks' limit analysis finds a thrust state, at μ 0.3 none
+    // (the joints slide: dem, Bullet, ODE and MuJoCo all let it fall by more than a metre)
+    const std::string arch = "make arch --voussoirs 15 --radius 1m --thickness-ratio 0.16 --reference limit-analysis ";
+    const auto held = run_cairn(arch + "--friction 0.7", dir);
+    REQUIRE(held.exit_code == 0);
+    CHECK_THAT(held.out, Contains("stands = 1"));
+    const auto slides = run_cairn(arch + "--friction 0.3", dir);
+    REQUIRE(slides.exit_code == 0);
+    CHECK_THAT(slides.out, Contains("stands = 0"));
+    CHECK_THAT(slides.out, Contains("no thrust state at mu = 0.3"));
+}
+
 TEST_CASE("cairn make colonnade writes a frame that ground_rocking judges as Makris and Vassiliou's", "[app][make]") {
     const auto dir = fresh_dir("make_colonnade");
     const std::string file = (dir / "colonnade.toml").string();

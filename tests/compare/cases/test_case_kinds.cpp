@@ -565,3 +565,26 @@ TEST_CASE("newmark reference: a block on a slope slides the closed form down it,
     REQUIRE(down.blocks.at(1).fixed);
     CHECK(final_slide(down) == Approx(z_up).epsilon(1e-9));
 }
+
+TEST_CASE("arch reference: a standing arch with no thrust-line margin is not judged on dem's hinging joints",
+          "[cases]") {
+    // arch_thick on joints of μ 0.3: the scene still says it stands, but no thrust state exists
+    // (its joints slide), so the thrust line keeps no margin s from the joints' edges. The hinging
+    // bound "the crown moves within 15 % of s" read 0 ≤ 0 and judged dem; it is shown instead
+    Scene s = shipped("structures/arch_thick");
+    s.contact.friction = 0.3;
+    const auto& kind = cases::case_kind("arch", s.source);
+    const auto run = synthetic_run(s, 1.0, 1e-2, still, upright);
+    cases::ContactKind dem;   // penalty point springs on the overlap scheme: the hinging is checked
+    const auto a = kind.analyse(s, run, dem);
+    const metrics::Metric* crown = nullptr;
+    for (const auto& m : a.metrics)
+        if (m.name == "crown settlement") crown = &m;
+    REQUIRE(crown);
+    CHECK(std::string(crown->verdict()) == "info");
+    CHECK_THAT(crown->basis, Catch::Contains("no thrust line keeps off the joints' edges"));
+    // at its own μ 0.8 the margin is there and the still arch is judged, and passes
+    s.contact.friction = 0.8;
+    for (const auto& m : kind.analyse(s, run, dem).metrics)
+        if (m.name == "crown settlement") CHECK(std::string(m.verdict()) == "pass");
+}

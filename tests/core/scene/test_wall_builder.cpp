@@ -234,3 +234,23 @@ TEST_CASE("a wall refuses openings that do not fit, naming them", "[scene][build
     w.openings = {{0.4, 0.0, 0.04, 0.8}};
     CHECK_THROWS_WITH(add_wall(s, w), Catch::Contains("less than a quarter brick"));
 }
+
+TEST_CASE("a generated scene keeps its contact scheme when written and read back", "[scene][builders]") {
+    // the file names the scheme whichever it is: the paper's scheme was written with no key and
+    // read back as the loader's default, the overlap scheme (`cairn make wall --scheme paper`)
+    Scene s = test::builder_scene();
+    WallSpec w;
+    w.courses = 2;
+    w.bricks = 2;
+    add_wall(s, w);
+    s.contact.scheme = ContactScheme::paper;
+    s.contact.grid_spacing = 0.05;   // m
+    const Scene paper = test::reloaded(s);
+    CHECK(paper.contact.scheme == ContactScheme::paper);
+    CHECK(paper.contact.grid_spacing == 0.05);
+    s.contact.scheme = ContactScheme::overlap;
+    s.contact.subdivision = 3;
+    const Scene overlap = test::reloaded(s);
+    CHECK(overlap.contact.scheme == ContactScheme::overlap);
+    CHECK(overlap.contact.subdivision == 3);
+}
