@@ -150,15 +150,15 @@ HeldDrift held_drift(const Series& s, double t0, double t1, double noise) {
         r.resolved = false;
         return r;
     }
-    // each kind's line, at the window's middle, its slope, and the rms scatter of its points about it
-    // (its value at the turns' mean time: a ringing that decays within the window has its turns
-    // early, and its lines, extrapolated to the window's middle, may cross there)
+    // each kind's line: its value at the turns' mean time (a ringing that decays within the window
+    // has its turns early, and its lines, extrapolated to the window's middle, may cross there),
+    // its slope, and the rms scatter of its points about it
     double turns_mid = 0.0;
     for (const auto& e : hi) turns_mid += e.t;
     for (const auto& e : lo) turns_mid += e.t;
     turns_mid /= double(hi.size() + lo.size());
     struct Line {
-        double at_mid, slope, scatter;
+        double at_turns, slope, scatter;
     };
     auto fit = [&](const std::vector<Extremum>& e) {
         Series p;
@@ -171,7 +171,7 @@ HeldDrift held_drift(const Series& s, double t0, double t1, double noise) {
     const Line top = fit(hi), bottom = fit(lo);
     const double about_line = r.ringing;   // the largest swing about the straight line
     r.drift = 0.5 * (top.slope + bottom.slope) * span;
-    r.ringing = 0.5 * (top.at_mid - bottom.at_mid);
+    r.ringing = 0.5 * (top.at_turns - bottom.at_turns);
     // a ringing about a steady mean, growing, decaying or steady, has the midpoints of its
     // neighbouring turns (a maximum and the minimum next to it) along one line, and its maxima
     // above its minima; a response forced by a record, whose swings carry it to either side and
