@@ -67,12 +67,13 @@ double joint_to_block_shear(const Scene& scene, int b) {
 
 void show_if_flexible(const Scene& scene, const ContactKind& contact, std::vector<metrics::Metric>& metrics) {
     const int b = scene.reference->block;
-    if (!contact.deformable || joint_to_block_stiffness(scene, b) <= kRigidUnderDrive) return;
+    const double ratio = joint_to_block_stiffness(scene, b);   // kn·h/E
+    if (!contact.deformable || ratio <= kRigidUnderDrive) return;
     char why[300];
     std::snprintf(why, sizeof why,
                   "not judged: the deformable block %s is compliant against its joints (kn·h/E = %.3g, above %.3g): "
                   "its own vibration, which the rigid sliding block leaves out, takes part in its motion; ",
-                  scene.blocks.at(size_t(b)).name.c_str(), joint_to_block_stiffness(scene, b), kRigidUnderDrive);
+                  scene.blocks.at(size_t(b)).name.c_str(), ratio, kRigidUnderDrive);
     for (auto& m : metrics)
         if (m.judged()) m = metrics::info(m.name, m.unit, m.value, m.reference, why + m.basis);
 }

@@ -249,6 +249,7 @@ metrics::Metric base_shear_metric(const Scene& scene, const oracle::WinklerBlock
     const double ramp = l ? l->ramp : 0.0, shear_period = 2.0 * M_PI * std::sqrt(block_mass(scene, scene.reference->block) /
                                                                                (scene.contact.ks * contact_area(scene)));
     const double period = std::max(wb.rocking_period(e, toe_inertia(scene)), shear_period);
+    const double shear_ratio = joint_to_block_shear(scene, scene.reference->block);   // ks·h/G
     char not_judged[400] = "";
     // 10 periods: a ramp of duration t_r leaves swings of about T/(π·t_r) of the static answer
     // (a linear oscillator), 3 % at 10 periods, and the lightly pressed points slip on the overshoot
@@ -262,12 +263,11 @@ metrics::Metric base_shear_metric(const Scene& scene, const oracle::WinklerBlock
                       "not judged: it still rings by ±%.3g m about its drift (a block rocking on part of its base is "
                       "lightly damped by its contact springs), so the mean is not the static state",
                       held.ringing);
-    else if (contact.deformable && joint_to_block_shear(scene, scene.reference->block) > kRigidInShear)
+    else if (contact.deformable && shear_ratio > kRigidInShear)
         std::snprintf(not_judged, sizeof not_judged,
                       "not judged: the deformable block is compliant in shear against its joints (ks·h/G = %.3g, above "
                       "%.3g): its own shear adds about %.2g %% to its base's, which the rigid block on springs leaves out",
-                      joint_to_block_shear(scene, scene.reference->block), kRigidInShear,
-                      11.0 * joint_to_block_shear(scene, scene.reference->block));
+                      shear_ratio, kRigidInShear, 11.0 * shear_ratio);
     else if (c < 3.0 * cell)
         std::snprintf(not_judged, sizeof not_judged,
                       "not judged: the contact zone (%.3g m) spans fewer than three of the contact's shear springs along "
