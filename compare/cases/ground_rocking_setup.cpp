@@ -97,10 +97,11 @@ void read_direction(const Scene& scene, const BlockDef& d, GroundSetup& out) {
     } else if (std::abs(out.dir.dot(by)) >= std::cos(1e-3)) {
         out.axis_block = -Vec3::UnitX() * (out.dir.dot(by) > 0.0 ? 1.0 : -1.0);
     } else {
-        char buf[200];
-        std::snprintf(buf, sizeof buf, "the horizontal drive, a ground acceleration along (%.4g, %.4g), is not along a side of block '%s'",
-                      -out.dir.x(), -out.dir.y(), d.name.c_str());
-        throw refuse(scene, std::string(buf) + ": the block would rock on a corner, which the plane oracles do not model");
+        throw refuse(scene, "the horizontal drive, a ground acceleration along (" + message_number(-out.dir.x()) + ", " +
+                                message_number(-out.dir.y()) + "), is not along a side of block '" + d.name +
+                                "' (its sides run along (" + message_number(bx.x()) + ", " + message_number(bx.y()) +
+                                ") and (" + message_number(by.x()) + ", " + message_number(by.y()) +
+                                ")): the block would rock on a corner, which the plane oracles do not model");
     }
 }
 

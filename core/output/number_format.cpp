@@ -18,6 +18,7 @@ std::string number_text(double v, int digits) {
 }
 
 std::string message_number(double v, int digits) {
+    if (v == 0.0) v = 0.0;   // −0 prints as 0
     char b[48];
     std::snprintf(b, sizeof b, "%.*g", digits, v);
     return b;

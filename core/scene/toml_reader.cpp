@@ -67,9 +67,31 @@ std::string Sources::written(const toml::node& node) const {
     return out;
 }
 
+namespace {
+
+/// an array or table longer than this many characters is quoted by its start only
+constexpr std::size_t kQuoteMax = 120;
+/// any other value (a string, a path) longer than this, likewise
+constexpr std::size_t kQuoteScalarMax = 400;
+
+/// the value as written, its start only when long: "[0, 0.1, 0.2, … (202 elements)]"
+std::string quoted(const toml::node& node, std::string text) {
+    const bool compound = node.is_array() || node.is_table();
+    const std::size_t max = compound ? kQuoteMax : kQuoteScalarMax;
+    if (text.size() <= max) return text;
+    std::size_t cut = compound ? text.rfind(", ", max - 20) : std::string::npos;
+    if (cut == std::string::npos || cut == 0) cut = max - 20;
+    while (cut > 0 && (static_cast<unsigned char>(text[cut]) & 0xC0) == 0x80) --cut;   // not inside a UTF-8 character
+    text.resize(cut);
+    if (auto a = node.as_array()) return text + ", … (" + std::to_string(a->size()) + " elements)]";
+    return text + " …";
+}
+
+}  // namespace
+
 void fail_at(const Sources& src, const toml::node& node, const std::string& key,
              const std::string& what) {
-    throw Error(src.origin(node) + ": " + key + " = " + src.written(node) + ": " + what);
+    throw Error(src.origin(node) + ": " + key + " = " + quoted(node, src.written(node)) + ": " + what);
 }
 
 // ---------------------------------------------------------------- Item

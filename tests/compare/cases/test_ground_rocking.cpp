@@ -191,7 +191,7 @@ TEST_CASE("ground_rocking: a scene its plane oracles cannot model is refused bef
         Scene x = s;   // shaken at an angle to the block's sides: it would rock on a corner
         for (auto& l : x.loads) l.force = Quat(Eigen::AngleAxisd(0.3, Vec3::UnitZ())) * l.force;
         x.blocks[size_t(a)].orientation = Quat::Identity();
-        refused(x, "not along a side of block 'A'");
+        refused(x, "not along a side of block 'A' (its sides run along (1, 0) and (0, 1))");
     }
     {
         Scene x = s;   // a push at a corner turns the block by itself

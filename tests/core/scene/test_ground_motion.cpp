@@ -51,6 +51,22 @@ TEST_CASE("bad ground motions are refused with file, line, key and value", "[sce
                Contains("not both"));
 }
 
+TEST_CASE("a long record in an error is quoted by its start and its length", "[scene][ground]") {
+    // 200 times, the second equal to the first: the message names the key and the sample, and
+    // quotes the array's start with its element count instead of all 200 numbers
+    std::string times = "[0";
+    for (int i = 0; i < 199; ++i) times += ", " + std::to_string(0.001 * i);
+    times += "]";
+    std::string accel = "[0";
+    for (int i = 0; i < 199; ++i) accel += ", 1";
+    accel += "]";
+    const std::string e =
+        error_of(with_extra("[ground_motion]\ntime = " + times + "\nacceleration = " + accel + "\n"));
+    CHECK_THAT(e, Contains("bad.toml:21: ground_motion.time = [0, 0.000000, 0.001000, "));
+    CHECK_THAT(e, Contains(", … (200 elements)]: times must increase strictly"));
+    CHECK(e.size() < 300);
+}
+
 TEST_CASE("every sample, the first too, is finite after units and scale", "[scene][ground][limits]") {
     const auto dir = std::filesystem::path(CAIRN_BINARY_DIR) / "test_scratch" / "core" / "ground";
     std::filesystem::create_directories(dir);
