@@ -17,6 +17,7 @@ namespace cairn::cases {
 namespace {
 
 double rocking_ratio(const Scene& scene);
+void check_drive(const Scene& scene);
 
 /// the face of the base (the first fixed block) the block rests on: its outward unit normal n and
 /// two unit directions t1, t2 = n × t1 in it (world x and y on a level base under gravity along −z)
@@ -116,6 +117,20 @@ metrics::Series along(const Scene& scene, const std::vector<Sample>& s, const Ve
     return out;
 }
 
+/// the reference block's material point `local` (block frame) moved along `e` since the first sample, m
+metrics::Series along_point(const Scene& scene, const std::vector<Sample>& s, const Vec3& e, const Vec3& local) {
+    const int f = free_index(scene, scene.reference->block);
+    const Vec3 r = local - mass_properties(scene.blocks.at(size_t(scene.reference->block)).corners, 1.0).centre;
+    metrics::Series out{times(s), {}};
+    const BlockState& b0 = s.front().blocks.at(size_t(f));
+    const Vec3 x0 = b0.position + b0.orientation * r;
+    for (const auto& x : s) {
+        const BlockState& b = x.blocks.at(size_t(f));
+        out.y.push_back((b.position + b.orientation * r - x0).dot(e));
+    }
+    return out;
+}
+
 /// the oracle's displacement along `e` (in the base's frame) at the times `t`, m
 std::vector<double> along_oracle(const oracle::SlidingHistory& h, const Vec2& e, const std::vector<double>& t) {
     std::vector<double> out;
@@ -128,24 +143,91 @@ std::vector<double> newmark_curve(const Scene& scene, ContactKind, const std::ve
     return along_oracle(h, judged_direction(h, largest_drive(scene, h)), t);
 }
 
-/// the least of the block's half-widths across its height over the height of its centre of mass
-/// above its lowest side (block frame; its height is the frame axis nearest the base's normal, so a
-/// block laid on its side is measured as it lies): the drive's ratio to n beyond which a rigid block
-/// would rock
-double rocking_ratio(const Scene& scene) {
+/// the block's footing on the base, block frame: k its height axis (the frame axis nearest the
+/// base's normal, so a block laid on its side is measured as it lies), its half-widths across the
+/// height from the centre of mass (the nearer side each way), the height of the centre of mass above
+/// its lowest side, and the point of that side under the centre of mass
+struct Footing {
+    int k = 2;
+    Vec3 half = Vec3::Zero();   // m, along the frame axes (the height axis's entry unused)
+    double height = 0.0;        // m
+    Vec3 base = Vec3::Zero();   // m, block frame
+};
+
+Footing footing(const Scene& scene) {
     const BlockDef& d = scene.blocks.at(size_t(scene.reference->block));
     const Vec3 up = d.orientation.inverse() * base_plane(scene).n;   // the base's normal in the block frame
-    int k = 0;
+    Footing f;
+    f.k = 0;
     for (int i = 1; i < 3; ++i)
-        if (std::abs(up[i]) > std::abs(up[k])) k = i;
+        if (std::abs(up[i]) > std::abs(up[f.k])) f.k = i;
     Vec3 lo = Vec3::Constant(1e300), hi = Vec3::Constant(-1e300);
     for (const auto& c : d.corners) lo = lo.cwiseMin(c), hi = hi.cwiseMax(c);
     const Vec3 centre = mass_properties(d.corners, 1.0).centre;
+    for (int i = 0; i < 3; ++i) f.half[i] = std::min(centre[i] - lo[i], hi[i] - centre[i]);
+    f.height = up[f.k] > 0.0 ? centre[f.k] - lo[f.k] : hi[f.k] - centre[f.k];
+    f.base = centre;
+    f.base[f.k] = up[f.k] > 0.0 ? lo[f.k] : hi[f.k];
+    return f;
+}
+
+/// the least of the block's half-widths across its height over the height of its centre of mass:
+/// the drive's ratio to n beyond which a rigid block would rock, whichever way it pushes
+double rocking_ratio(const Scene& scene) {
+    const Footing f = footing(scene);
     double b = 1e300;
     for (int i = 0; i < 3; ++i)
-        if (i != k) b = std::min(b, std::min(centre[i] - lo[i], hi[i] - centre[i]));
-    const double height = up[k] > 0.0 ? centre[k] - lo[k] : hi[k] - centre[k];
-    return b / height;
+        if (i != f.k) b = std::min(b, f.half[i]);
+    return b / f.height;
+}
+
+/// the drive's ratio to n beyond which a rigid block rocks when pushed along `u` (unit, in the
+/// base's frame): the distance from the centre to the edge the push's line crosses over the
+/// height, min(a/|cos φ|, b/|sin φ|)/h for half sides a, b at φ to the push
+double rocking_ratio_along(const Scene& scene, const Footing& f, const Vec2& u) {
+    const BlockDef& d = scene.blocks.at(size_t(scene.reference->block));
+    const Base p = base_plane(scene);
+    const Vec3 w = u.x() * p.t1 + u.y() * p.t2;   // the push in the world
+    double reach = 1e300;
+    for (int i = 0; i < 3; ++i) {
+        if (i == f.k) continue;
+        const double c = std::abs(w.dot(d.orientation * Vec3::Unit(i)));
+        if (c > 1e-12) reach = std::min(reach, f.half[i] / c);
+    }
+    return reach / f.height;
+}
+
+/// refuses a drive Newmark's block cannot follow: one that lifts the block off its base, or one
+/// whose ratio to the base's pressure passes the block's rocking threshold where friction holds it
+/// (μ above that threshold: the rigid block rocks, and may fall, before it slides). Sampled at the
+/// oracle's step
+void check_drive(const Scene& scene) {
+    const auto f = plane_drive(scene);
+    const Footing foot = footing(scene);
+    const double mu = scene.contact.friction, T = scene.run.duration;
+    const double h = std::max(1e-5, T / 2e6);
+    const long steps = std::max(1L, long(std::ceil(T / h)));
+    const std::string key = scene.source + ": reference.kind = \"newmark\": ";
+    double worst = 1.0, worst_t = 0.0, worst_ratio = 0.0, worst_tip = 0.0;   // the drive's largest excess over the threshold
+    for (long i = 0; i <= steps; ++i) {
+        const double t = std::min(T, double(i) * h);
+        const Vec3 d = f(t);
+        const double n = -d.z();   // the pressure into the base per unit mass, m/s²
+        if (!(n > 0.0))
+            throw Error(key + "gravity and the loads (a [ground_motion]'s −m·a_g among them) lift the block off its base at t = " +
+                        message_number(t, 6) + " s (their part into the base is " + message_number(n) +
+                        " m/s²): Newmark's block stays on its base and does not fly");
+        const Vec2 fh(d.x(), d.y());
+        if (!(fh.norm() > 0.0)) continue;
+        const double ratio = fh.norm() / n, tip = rocking_ratio_along(scene, foot, fh.normalized());
+        if (mu > tip && ratio / tip > worst) worst = ratio / tip, worst_t = t, worst_ratio = ratio, worst_tip = tip;
+    }
+    if (worst > 1.0)
+        throw Error(key + "the drive along the base reaches " + message_number(worst_ratio) + " of the pressure into it (at t = " +
+                    message_number(worst_t, 6) + " s), above the block's rocking threshold b/h = " + message_number(worst_tip) +
+                    " that way, and friction (μ = " + message_number(mu) +
+                    ") holds the base there: a rigid block rocks, and may overturn, before it slides, which "
+                    "Newmark's sliding block does not model (a ground_rocking reference does)");
 }
 
 CaseAnalysis judged_newmark(const Scene& scene, const std::vector<Sample>& s, ContactKind contact) {
@@ -236,13 +318,25 @@ CaseAnalysis judged_newmark(const Scene& scene, const std::vector<Sample>& s, Co
     const double t0 = after ? 0.5 * (changed + T) : 0.5 * T;
     char why[300];
     std::snprintf(why, sizeof why,
-                  "the drive stays inside the friction disk; %s; 5 %% of the elastic base shear %.3g m, as the "
-                  "stick case",
+                  "the drive stays inside the friction disk; the base centre over %s; 5 %% of the elastic base "
+                  "shear %.3g m, as the stick case",
                   after ? ("the second half of the time after the drive's end at " + message_number(changed) + " s").c_str()
                         : "the second half of the run",
                   scale);
-    r.metrics.push_back(slip_while_held(r.measured, t0, T, 0.05 * scale, why));
+    // at the base (the probe "base" where the scene has one, else the point of its lowest side under
+    // the centre of mass): a block still rocking on its springs swings its centre of mass by h·θ
+    // over a base that does not slip (a tilt of 1e-6 rad dying out on a 0.5 m cube: 2.4e-7 m)
+    const int probe = probe_index(scene, "base");
+    const Vec3 at = probe >= 0 && scene.probes.at(size_t(probe)).block == a ? scene.probes.at(size_t(probe)).point
+                                                                               : footing(scene).base;
+    r.metrics.push_back(slip_while_held(along_point(scene, s, e, at), t0, T, 0.05 * scale, why));
     return r;
+}
+
+/// what the kind refuses before any run: check_newmark's launch, and a drive that lifts or rocks the block
+void check_newmark_scene(const Scene& scene) {
+    check_newmark(scene);
+    check_drive(scene);
 }
 
 /// the run judged, a deformable block compliant against its joints shown instead (show_if_flexible)
@@ -257,7 +351,7 @@ CaseAnalysis analyse_newmark(const Scene& scene, const std::vector<Sample>& s, C
 // kind "newmark": Coulomb's law holds for rigid contact
 static const CaseKind& newmark_kind() {
     static const FunctionKind k("newmark", {}, analyse_newmark, newmark_curve, rigid_contact_only,
-                                "slid half the final distance", check_newmark);
+                                "slid half the final distance", check_newmark_scene);
     return k;
 }
 

@@ -5,6 +5,8 @@
 
 #include <cmath>
 #include <filesystem>
+#include <fstream>
+#include <iterator>
 #include <functional>
 #include <map>
 #include <set>
@@ -564,6 +566,44 @@ TEST_CASE("newmark reference: a block on a slope slides the closed form down it,
     down.blocks.at(1).orientation = down.blocks.at(1).orientation * Quat(Eigen::AngleAxisd(M_PI, Vec3::UnitX()));
     REQUIRE(down.blocks.at(1).fixed);
     CHECK(final_slide(down) == Approx(z_up).epsilon(1e-9));
+}
+
+TEST_CASE("newmark reference: a drive that rocks or lifts the block is refused before any run, naming the threshold",
+          "[cases]") {
+    // block_pulse_slide's 0.8 g pulse at μ = 0.6 on blocks of other shapes (its file's text with
+    // the size changed; the check reads the block's frame, not where it stands)
+    std::string text;
+    {
+        std::ifstream in(std::string(CAIRN_SOURCE_DIR) + "/scenarios/earthquake/block_pulse_slide.toml");
+        text.assign(std::istreambuf_iterator<char>(in), {});
+    }
+    REQUIRE(text.find("size = [0.4, 0.4, 0.4]") != std::string::npos);
+    auto scene = [&](const std::string& size, std::vector<Override> set) {
+        std::string t = text;
+        t.replace(t.find("size = [0.4, 0.4, 0.4]"), 22, "size = " + size);
+        const double height = std::stod(size.substr(size.rfind(',') + 1));
+        set.push_back({"blocks.A.position", "[0, 0, " + std::to_string(0.5 * height) + "]"});
+        return parse_scene(t, "shaped.toml", set);
+    };
+    const auto& kind = cases::case_kind("newmark", "shaped.toml");
+    // as shipped: b/h = 1 above μ, the block slides before it could rock
+    CHECK_NOTHROW(kind.check(scene("[0.4, 0.4, 0.4]", {})));
+    // 0.4 wide along the push, 1.0 high: b/h = 0.4 below μ = 0.6 and the drive (0.8): the rigid block
+    // rocks first, and Newmark's block would call it held or sliding
+    CHECK_THROWS_WITH(kind.check(scene("[0.4, 2.0, 1.0]", {})),
+                      Catch::Contains("shaped.toml") && Catch::Contains("reaches 0.8 of the pressure") &&
+                          Catch::Contains("rocking threshold b/h = 0.4 that way") && Catch::Contains("(μ = 0.6)"));
+    // pushed along its 2 m side instead, b/h = 2: it slides
+    CHECK_NOTHROW(kind.check(scene("[0.4, 2.0, 1.0]", {{"ground_motion.direction", "[0, 1, 0]"}})));
+    // pushed along the 0.4 m side with μ = 0.3 below b/h: friction gives way first, it slides
+    CHECK_NOTHROW(kind.check(scene("[0.4, 2.0, 1.0]", {{"contact.friction", "0.3"}})));
+    // along the diagonal of a 0.4 × 0.4 × 1.0 block: the push's line crosses a corner, b/h = 0.2·√2/0.5
+    CHECK_THROWS_WITH(kind.check(scene("[0.4, 0.4, 1.0]", {{"ground_motion.direction", "[1, 1, 0]"}})),
+                      Catch::Contains("b/h = 0.5657"));
+    // a ground acceleration 1.6 × 0.8 g at (0.6, 0, −0.8): its downward 1.02 g takes the weight off
+    CHECK_THROWS_WITH(kind.check(scene("[0.4, 0.4, 0.4]", {{"ground_motion.direction", "[0.6, 0, -0.8]"},
+                                                            {"ground_motion.scale", "1.6"}})),
+                      Catch::Contains("lift the block off its base at t = 0.2") && Catch::Contains("does not fly"));
 }
 
 TEST_CASE("arch reference: a standing arch with no thrust-line margin is not judged on dem's hinging joints",
