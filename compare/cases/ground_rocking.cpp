@@ -14,6 +14,7 @@
 #include "cases/case_util.hpp"
 #include "cases/ground_rocking_setup.hpp"
 #include "cases/winkler_model.hpp"
+#include "output/number_format.hpp"
 
 namespace cairn::cases {
 
@@ -28,7 +29,7 @@ std::string housner_unmodelled(const Scene& scene, const GroundSetup& s) {
     if (!s.stack.empty())
         return "a stack of " + std::to_string(s.stack.size()) +
                " blocks rocking on one another: no rigid-contact oracle models it (its blocks' motions are chaotic "
-               "and each impact's loss is the engine's own); Housner's curve of the block alone is a guide";
+               "and each impact's loss is the engine's own); Housner's curve of the stack as one block is a guide";
     if (s.friction_demand <= scene.contact.friction) return "";
     char why[240];
     std::snprintf(why, sizeof why,
@@ -217,9 +218,17 @@ CaseAnalysis analyse_ground(const Scene& scene, const std::vector<Sample>& sampl
 
     const std::string unmodelled = contact.penalty ? penalty_unmodelled(scene, contact, s) : housner_unmodelled(scene, s);
     if (!unmodelled.empty()) {
-        out.analytic = ground_housner(scene, s, t, -1.0).theta;
         out.analytic_key = "Housner";
-        out.analytic_label = (s.columns > 1 ? frame_label(scene, s) : "Housner's rigid block under the same drive") + " (guide only)";
+        if (!s.stack.empty()) {
+            // the stack rocking as one block: how a column of equal drums first lifts
+            const StackMonolith one = stack_monolith(scene, s);
+            out.analytic = stack_housner(scene, s, t).theta;
+            out.analytic_label = "Housner's rigid block of the stack as one (half-width " + message_number(one.b) +
+                                 " m, centre of mass " + message_number(one.h) + " m up) under the same drive (guide only)";
+        } else {
+            out.analytic = ground_housner(scene, s, t, -1.0).theta;
+            out.analytic_label = (s.columns > 1 ? frame_label(scene, s) : "Housner's rigid block under the same drive") + " (guide only)";
+        }
         const Response ref = read_response({t, out.analytic}, mark, s.alpha);
         out.metrics.push_back(not_comparable("largest rotation", "rad", run.largest, ref.largest, unmodelled));
         return out;

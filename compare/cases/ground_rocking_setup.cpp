@@ -408,12 +408,15 @@ oracle::BaseMotion ground_base_motion(const GroundSetup& s) {
     return m;
 }
 
-/// Housner's block under the scene's drive at the times t, with impact ratio r (< 0: Housner's)
-oracle::RockingResult ground_housner(const Scene& scene, const GroundSetup& s, const std::vector<double>& t, double r) {
-    oracle::RockingOptions o;
-    o.restitution = r < 0.0 ? s.ratio : r;
-    o.duration = t.empty() ? scene.run.duration : t.back();
-    o.output_times = t;
+namespace {
+
+/// the oracle `o` under the scene's drive at the times t, with impact ratio r (< 0: Housner's)
+oracle::RockingResult run_housner(const oracle::RockingOracle& o, const Scene& scene, const GroundSetup& s,
+                                  const std::vector<double>& t, double r) {
+    oracle::RockingOptions opt;
+    opt.restitution = r < 0.0 ? s.ratio : r;
+    opt.duration = t.empty() ? scene.run.duration : t.back();
+    opt.output_times = t;
     oracle::BaseMotion m = ground_base_motion(s);
     if (s.p2_factor != 1.0) {
         // gravity and drive both times p2_factor (ground_oracle): θ̈ = −p̂²[(1 + a_v/g) sin + (a_g/g) cos]
@@ -421,7 +424,35 @@ oracle::RockingResult ground_housner(const Scene& scene, const GroundSetup& s, c
         m.horizontal = [h = m.horizontal, k](double x) { return k * h(x); };
         m.vertical = [v = m.vertical, k](double x) { return k * v(x); };
     }
-    return ground_oracle(scene, s).run(m, o);
+    return o.run(m, opt);
+}
+
+}  // namespace
+
+/// Housner's block under the scene's drive at the times t, with impact ratio r (< 0: Housner's)
+oracle::RockingResult ground_housner(const Scene& scene, const GroundSetup& s, const std::vector<double>& t, double r) {
+    return run_housner(ground_oracle(scene, s), scene, s, t, r);
+}
+
+StackMonolith stack_monolith(const Scene& scene, const GroundSetup& s) {
+    const BlockDef& bottom = scene.blocks.at(size_t(s.stack.front()));
+    double lo = 1e300, hi = -1e300, base = 1e300;
+    for (const auto& c : bottom.corners) {
+        const Vec3 w = bottom.position + bottom.orientation * c;
+        lo = std::min(lo, w.dot(s.dir)), hi = std::max(hi, w.dot(s.dir)), base = std::min(base, w.z());
+    }
+    double m = 0.0, mz = 0.0;
+    for (int i : s.stack) {
+        const BlockDef& b = scene.blocks.at(size_t(i));
+        const double mi = block_mass(scene, i);
+        m += mi, mz += mi * (b.position + b.orientation * mass_properties(b.corners, 1.0).centre).z();
+    }
+    return {0.5 * (hi - lo), mz / m - base};
+}
+
+oracle::RockingResult stack_housner(const Scene& scene, const GroundSetup& s, const std::vector<double>& t) {
+    const StackMonolith one = stack_monolith(scene, s);
+    return run_housner(oracle::RockingOracle(one.b, one.h, gravity(scene)), scene, s, t, -1.0);
 }
 
 /// the Winkler block of dem's contact under the same drive, θ at the times t

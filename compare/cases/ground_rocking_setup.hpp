@@ -61,6 +61,18 @@ double ground_ratio(const Scene& scene, const GroundSetup& s);
 /// Housner's block (or frame) under the scene's drive at the times t, with impact ratio r (< 0: its own)
 oracle::RockingResult ground_housner(const Scene& scene, const GroundSetup& s, const std::vector<double>& t, double r);
 
+/// a stack as one rigid block: the bottom block's half-width along the drive and the height of the
+/// stack's centre of mass above the base, m
+struct StackMonolith {
+    double b = 0.0, h = 0.0;
+};
+StackMonolith stack_monolith(const Scene& scene, const GroundSetup& s);
+
+/// Housner's equation of a stack rocking as one rigid rectangle of its monolith's b and h (exact for
+/// a column of equal blocks; a guide, not an oracle, for blocks rocking on one another), θ at the times t
+oracle::RockingResult stack_housner(const Scene& scene, const GroundSetup& s, const std::vector<double>& t);
+
+
 /// the stack's blocks on Winkler bed joints as dem's contact cuts their faces (no drive yet)
 oracle::WinklerStack winkler_stack(const Scene& scene, ContactKind contact, const GroundSetup& s);
 

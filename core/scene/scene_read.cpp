@@ -159,7 +159,10 @@ void read_reference(const TableReader& root, Scene& scene) {
     TableReader r(root.sources(), section.table(), "reference", allowed);
     ReferenceDef ref;
     ref.kind = kind->name;
-    ref.block = block_named(r.require("block"), scene);
+    Item block = r.require("block");
+    ref.block = block_named(block, scene);
+    block.check(!scene.blocks[static_cast<std::size_t>(ref.block)].fixed,
+                "the reference describes a moving block; this one is fixed (the ground or a support)");
     for (const auto& p : kind->parameters)
         if (Item it = r.get(p)) ref.values[p] = it.number();
     scene.reference = ref;

@@ -410,7 +410,7 @@ TEST_CASE("ground_rocking: blocks one on another read as a stack, judged on dem'
     on_cap.reference->block = on_cap.block_index("cap");
     CHECK(cases::read_ground_setup(on_cap).stack.size() == 2);
     // its curve on dem's overlap contact is the stack on Winkler joints; rigid contact has no oracle
-    // for blocks rocking on one another and is shown beside Housner's lone block
+    // for blocks rocking on one another and is shown beside Housner's block of the stack as one
     const std::vector<double> t{0.0, 0.1, 0.2};
     const auto& kind = cases::case_kind("ground_rocking", x.source);
     CHECK(kind.curve(x, {true, true}, t).size() == 3);
@@ -438,6 +438,38 @@ TEST_CASE("ground_rocking: blocks one on another read as a stack, judged on dem'
     REQUIRE(shown.metrics.size() == 1);
     CHECK(shown.metrics[0].check == metrics::Check::not_comparable);
     CHECK_THAT(shown.metrics[0].basis, Catch::Contains("288 contact cells"));
+    // the guide shown beside rigid contact is the stack as one block: the shipped three drums of
+    // 0.3 × 0.3 × 0.5 m rock as one 0.3 × 0.3 × 1.5 m column (b = 0.15 m, centre 0.75 m up), the
+    // same curve as that column written as one block under the same pulse
+    Scene three = load_scene(std::string(CAIRN_SOURCE_DIR) + "/scenarios/earthquake/stack_pulse_rock.toml");
+    const cases::GroundSetup st = cases::read_ground_setup(three);
+    CHECK(cases::stack_monolith(three, st).b == Approx(0.15).epsilon(1e-12));
+    CHECK(cases::stack_monolith(three, st).h == Approx(0.75).epsilon(1e-12));
+    Scene column = three;
+    column.blocks.clear();
+    for (const auto& b : three.blocks)
+        if (b.fixed || b.name == "D1") column.blocks.push_back(b);
+    BlockDef& one = column.blocks[size_t(column.block_index("D1"))];
+    one.corners = box_corners(Vec3(0.3, 0.3, 1.5));
+    one.position.z() = 0.75;
+    column.loads.clear();
+    for (const auto& l : three.loads)
+        if (l.block == three.block_index("D1")) column.loads.push_back(l), column.loads.back().block = column.block_index("D1"), column.loads.back().force *= 3.0;
+    column.reference->block = column.block_index("D1");
+    std::vector<double> times;
+    for (int i = 0; i <= 400; ++i) times.push_back(0.01 * i);
+    const auto guide = kind.analyse(three, at_rest(three), {false}).analytic;
+    const auto alone = cases::ground_housner(column, cases::read_ground_setup(column), times, -1.0).theta;
+    REQUIRE(guide.size() == 3);   // at the run's times
+    const auto shown3 = kind.analyse(three, at_rest(three), {false});
+    CHECK_THAT(shown3.analytic_label, Catch::Contains("stack as one (half-width 0.15 m, centre of mass 0.75 m up)"));
+    const auto curve = cases::stack_housner(three, st, times).theta;
+    double largest = 0.0;
+    for (size_t i = 0; i < times.size(); ++i) {
+        CHECK(curve[i] == Approx(alone[i]).margin(1e-12));
+        largest = std::max(largest, std::abs(curve[i]));
+    }
+    CHECK(largest > 0.01);   // it rocks: the pulse is 1.2 g·tan α of the column (0.24 g)
     // a block of the stack turned about the vertical is refused: it would rock on its corners
     Scene turned = x;
     turned.blocks[size_t(turned.block_index("cap"))].orientation = Quat(Eigen::AngleAxisd(0.3, Vec3::UnitZ()));

@@ -181,6 +181,9 @@ TEST_CASE("an unknown reference kind or parameter is rejected", "[scene][reject]
                Contains("bad.toml:21: reference.kind = \"wobble\": unknown reference kind"));
     CHECK_THAT(error_of(with_extra("[reference]\nkind = \"impact\"\nblock = \"A\"\nforce = 1\n")),
                Contains("bad.toml:23: reference.force = 1: unknown key (allowed: kind, block, gap)"));
+    // the reference describes a block that moves: B is the fixed base
+    CHECK_THAT(error_of(with_extra("[reference]\nkind = \"rest\"\nblock = \"B\"\n")),
+               Contains("bad.toml:22: reference.block = \"B\": the reference describes a moving block; this one is fixed"));
 }
 
 TEST_CASE("a fixed node outside the mesh is rejected", "[scene][reject]") {
