@@ -306,11 +306,13 @@ double time_to_rotation(const std::function<double(double, double)>& acc, double
 
 double BlockStack::rigid_ramp_time(const std::function<double(double)>& lambda, double rotation, double until) const {
     // the layers above the critical joint about its edge (the whole stack where it is the base):
-    // θ̈ = (m g/i)[λ(t)(h cos θ − b sin θ) − (b cos θ − h sin θ)], held at θ = 0 while that is < 0
+    // θ̈ = (m g/i)[λ(t)(h cos θ + b sin θ) − (b cos θ − h sin θ)], held at θ = 0 while that is < 0:
+    // the push acts at the centre's height above the edge, h cos θ + b sin θ, the weight at its
+    // distance behind it, b cos θ − h sin θ
     const Monolith s = monolith_of(layers, critical_joint(layers));
     auto acc = [&](double t, double a) {
         const double torque =
-            s.m * g * (lambda(t) * (s.h * std::cos(a) - s.b * std::sin(a)) - (s.b * std::cos(a) - s.h * std::sin(a)));
+            s.m * g * (lambda(t) * (s.h * std::cos(a) + s.b * std::sin(a)) - (s.b * std::cos(a) - s.h * std::sin(a)));
         return (a <= 0.0 && torque <= 0.0) ? 0.0 : torque / s.i;
     };
     return time_to_rotation(acc, 0.0, true, rotation, until);
@@ -333,7 +335,7 @@ double BlockStack::winkler_ramp_time(double kn, const std::function<double(doubl
         const double f = (a - lo->top_rotation) / (hi->top_rotation - lo->top_rotation);
         return sign * (lo->lambda + f * (hi->lambda - lo->lambda));
     };
-    // the rigid monolith's equation, θ̈ = (m g/i)(h cos θ − b sin θ)(λ(t) − λ_s(θ)), with the
+    // the rigid monolith's equation, θ̈ = (m g/i)(h cos θ + b sin θ)(λ(t) − λ_s(θ)), with the
     // Winkler stack's quasi-static multiplier λ_w in place of the rigid λ_s; from its static state
     // under λ(0) on the rising branch
     const Monolith s = monolith_of(layers, critical_joint(layers));
@@ -347,7 +349,7 @@ double BlockStack::winkler_ramp_time(double kn, const std::function<double(doubl
     }
     const double theta0 = lambda0 < 0 ? -lo : lo;
     auto acc = [&](double t, double a) {
-        return s.m * g / s.i * (s.h * std::cos(a) - s.b * std::sin(a)) * (lambda(t) - static_multiplier(a));
+        return s.m * g / s.i * (s.h * std::cos(a) + s.b * std::sin(a)) * (lambda(t) - static_multiplier(a));
     };
     return time_to_rotation(acc, theta0, false, rotation, until);
 }

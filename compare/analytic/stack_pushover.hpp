@@ -50,7 +50,7 @@ struct BlockStack {
     double rigid_ramp_time(const std::function<double(double)>& lambda, double rotation, double until) const;
     /// the same under the joints of no-tension Winkler springs kn (N/m³): the monolith's equation
     /// with the quasi-static multiplier of winkler_multiplier's path, λ_w(θ) at the top's rotation
-    /// θ, in place of the rigid one: i θ̈ = m g (h cos θ − b sin θ)(λ(t) − λ_w(θ)), from its static
+    /// θ, in place of the rigid one: i θ̈ = m g (h cos θ + b sin θ)(λ(t) − λ_w(θ)), from its static
     /// state under λ(0). The rising branch is stable (the stack leans with the ramp), past the
     /// peak it runs away: the peak plus the lag. NaN as above, or where the path has no peak or
     /// ends before `rotation`.

@@ -79,6 +79,30 @@ TEST_CASE("a rigid stack under a ramp tips when λ passes B/H plus the ramp's la
     CHECK(std::isnan(column.rigid_ramp_time([](double) { return 0.25; }, 0.05, 10.0)));   // below B/H: never
 }
 
+TEST_CASE("the rigid stack turns about its edge as work and energy say, under a constant push", "[oracle][pushover]") {
+    // three 0.4 × 0.4 × 0.5 m drums as one 0.4 × 1.5 m column (b = 0.2, h = 0.75 m about its edge,
+    // i = (4/3)m(b² + h²)) under λ = 0.3 held from t = 0: the push's work and the weight's rise give
+    // ½iω² = m g[λ(h sin θ + b(1 − cos θ)) − (b sin θ + h(cos θ − 1))], so the time to 0.05 rad is
+    // ∫dθ/ω (Simpson in u = √θ, where the integrand stays finite). The height of the centre above
+    // the edge is h cos θ + b sin θ: with − b sin θ, the lever of a sign slip, it came 1.3 % late
+    const double m = 0.4 * 0.4 * 0.5 * 2600.0, g = 9.81, b = 0.2, h = 0.75, lambda = 0.3, to = 0.05;
+    const BlockStack column{{{0.5, 0.4, 0.4, m}, {0.5, 0.4, 0.4, m}, {0.5, 0.4, 0.4, m}}, g};
+    const double i_m = 4.0 / 3.0 * (b * b + h * h);
+    auto integrand = [&](double u) {
+        if (u == 0.0) return 2.0 / std::sqrt(2.0 * g * (lambda * h - b) / i_m);   // ω ≈ √(2g(λh − b)θ/(i/m))
+        const double th = u * u;
+        const double work = g * (lambda * (h * std::sin(th) + b * (1 - std::cos(th))) - (b * std::sin(th) + h * (std::cos(th) - 1)));
+        return 2.0 * u / std::sqrt(2.0 * work / i_m);
+    };
+    const int n = 20000;
+    const double top = std::sqrt(to);
+    double sum = integrand(0.0) + integrand(top);
+    for (int k = 1; k < n; ++k) sum += (k % 2 ? 4.0 : 2.0) * integrand(k * top / n);
+    const double expected = sum * top / n / 3.0;   // 0.514388 s
+    // 2e-4 s: the integration's 1e-4 s step, at whose end the threshold is read
+    CHECK(column.rigid_ramp_time([&](double) { return lambda; }, to, 10.0) == Approx(expected).margin(2e-4));
+}
+
 TEST_CASE("a stack narrower above turns about its critical joint, rigid or on Winkler joints", "[oracle][pushover]") {
     // two 0.5 × 0.5 × 0.4 m blocks under two 0.3 × 0.3 × 0.4 m ones: the upper two turn about the
     // narrower joint at λ = 0.15/0.4 = 0.375, the whole stack about the base only at 0.408
