@@ -22,6 +22,8 @@ namespace cairn::cases {
 
 namespace {
 
+/// friction at which the LP's joints hardly slide (a sliding joint dilates by μ times its slip)
+constexpr double kNoSlip = 100.0;
 constexpr double kSlipShare = 0.05;   // a joint slipping at 5 % of the mechanism's speed: sliding takes part
 constexpr double kInset = 1e-3;       // m: how far inside an edge a rigid engine's contact hinges (Bullet's
                                       // margin rounds every box edge by 1 mm; ODE's and MuJoCo's contacts are soft)
@@ -121,8 +123,17 @@ AssemblyPushover analyse_limits(const Scene& scene) {
     r.record_sign = record_sign(scene);
     const Vec3 live = -r.record_sign * gravity(scene) * dir;   // −m·a_g per unit a/g
     const auto blocks = oracle::limit_blocks(scene);
-    const auto la = oracle::collapse_multiplier(blocks, scene.gravity, live, scene.contact.friction);
+    auto la = oracle::collapse_multiplier(blocks, scene.gravity, live, scene.contact.friction);
     r.interfaces = la.interfaces;
+    // where several mechanisms give the same λ, the LP's duals may return one whose joints slide,
+    // and which one hangs on the blocks' order (a column pushed along its diagonal, its blocks
+    // renamed: every verdict went "not judged"). Where joints that hardly slide (μ = kNoSlip) give
+    // the same λ, a mechanism without sliding collapses it too, and that one is taken
+    if (la.stands_at_zero && std::isfinite(la.lambda) && scene.contact.friction < kNoSlip) {
+        const auto rocking = oracle::collapse_multiplier(blocks, scene.gravity, live, kNoSlip);
+        if (std::isfinite(rocking.lambda) && !rocking.mechanism.empty() && rocking.lambda <= la.lambda * (1 + 1e-9))
+            la.mechanism = rocking.mechanism;
+    }
     if (!la.stands_at_zero)
         throw Error(head(scene) + "blocks: no statically admissible state under gravity alone (rigid-block limit "
                     "analysis, " + std::to_string(la.interfaces) + " joints): the assembly does not stand, so no pushover");
