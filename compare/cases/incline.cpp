@@ -7,6 +7,8 @@
 #include "cases/case_kind.hpp"
 #include "cases/case_util.hpp"
 #include "error.hpp"
+#include "geometry/hexahedron.hpp"
+#include "geometry/overlap.hpp"
 #include "output/number_format.hpp"
 
 namespace cairn::cases {
@@ -21,12 +23,32 @@ struct Plane {
     double angle;
 };
 
+/// the outward normal (world) of the side of a general hexahedron `support` that `block` rests on:
+/// of the sides whose plane the block's centre of mass lies beyond, the one facing most against
+/// gravity `g` (unit); boxes are read so already (upright_frames: their frame z)
+Vec3 resting_face_normal(const BlockDef& support, const BlockDef& block, const Vec3& g) {
+    const Corners w = placed_corners(support.corners, support.position, support.orientation);
+    const Vec3 centre = mass_properties(w, 1.0).centre;
+    const Vec3 on = block.position + block.orientation * mass_properties(block.corners, 1.0).centre;
+    Vec3 best = -g;
+    double up = -2.0;
+    for (const auto& f : kFaceCorners) {
+        const Vec3 &c0 = w[size_t(f[0])], &c1 = w[size_t(f[1])], &c2 = w[size_t(f[2])], &c3 = w[size_t(f[3])];
+        Vec3 n = (c2 - c0).cross(c3 - c1).normalized();
+        if (n.dot(c0 - centre) < 0) n = -n;   // outward
+        if (n.dot(on - c0) > 0.0 && -g.dot(n) > up) up = -g.dot(n), best = n;
+    }
+    return best;
+}
+
 Plane plane(const Scene& scene) {
     const BlockDef* support = nullptr;
     for (const auto& b : scene.blocks)
         if (b.fixed) { support = &b; break; }
     if (!support) throw Error(scene.source + ": an incline reference needs a fixed block as its plane");
-    const Vec3 n = support->orientation * Vec3::UnitZ(), g = scene.gravity.normalized();
+    const Vec3 g = scene.gravity.normalized();
+    const Vec3 n = support->shape == Shape::box ? Vec3(support->orientation * Vec3::UnitZ())
+                                                : resting_face_normal(*support, scene.blocks.at(size_t(scene.reference->block)), g);
     const Vec3 along = g - g.dot(n) * n;
     Plane p{along.norm() > 1e-12 ? Vec3(along.normalized()) : Vec3::UnitX(), std::acos(std::clamp(-g.dot(n), -1.0, 1.0))};
     const auto it = scene.reference->values.find("angle");

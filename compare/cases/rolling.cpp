@@ -8,6 +8,7 @@
 #include "error.hpp"
 #include "geometry/hexahedron.hpp"
 #include "geometry/overlap.hpp"
+#include "output/number_format.hpp"
 
 namespace cairn::cases {
 
@@ -148,6 +149,18 @@ static void check_rolling(const Scene& scene) {
     const BlockDef* b = first_fixed(scene);
     if (!b) throw Error(head + "no fixed block to roll down");
     const double slope = scene.reference->values.at("slope");
+    // the oracles are a cube's (its edge read along block-frame x): a box of other sides tips and
+    // drops by other distances
+    const BlockDef& d = scene.blocks.at(size_t(scene.reference->block));
+    Vec3 lo = Vec3::Constant(1e300), hi = Vec3::Constant(-1e300);
+    for (const auto& c : d.corners) lo = lo.cwiseMin(c), hi = hi.cwiseMax(c);
+    const Vec3 sides = hi - lo;
+    if (d.shape != Shape::box || sides.maxCoeff() - sides.minCoeff() > 1e-6 * sides.maxCoeff())
+        throw Error(head + "block '" + d.name + "' is " +
+                    (d.shape != Shape::box ? std::string("a general hexahedron")
+                                           : message_number(sides.x()) + " × " + message_number(sides.y()) + " × " +
+                                                 message_number(sides.z()) + " m") +
+                    ": the rolling reference models a cube tumbling face after face (case d)");
     // the frame turned the fall line onto +x: only the slope's angle is left to match
     const double inclined = std::acos(std::clamp(top_normal(*b).z(), -1.0, 1.0));
     if (std::abs(inclined - slope) > 1e-3) {

@@ -55,7 +55,7 @@ TEST_CASE("validate draws the figures of a scene full of metacharacters and runs
     const std::string scene_name = "scene '\"`touch SENTINEL_file`$(touch SENTINEL_file2);#@m system('touch SENTINEL_f') \\.toml";
     std::ofstream(dir / scene_name)
         << "description = " << toml_string(description) << "\n"
-        << "[run]\nduration = 0.15\n"
+        << "[run]\nduration = 0.15\nsettle = false\n"
         << "[materials.stone]\ndensity = 2600\nyoung = 30e9\npoisson = 0.2\n"
         << "[contact]\nkn = 3e7\nks = 3e7\nfriction = 0.6\n"
         << "[blocks." << toml_string(block) << "]\nsize = [1.0, 1.0, 1.0]\nposition = [0.0, 0.0, 0.5]\n"
