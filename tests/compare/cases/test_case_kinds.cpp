@@ -649,6 +649,25 @@ TEST_CASE("rest and impact references: a settled start, coarse rows and a gap no
     CHECK_THROWS_WITH(drop.check(wrong), Catch::Contains("is placed with its bottom " + message_number(gap, 6) + " m above the top"));
 }
 
+TEST_CASE("rest and impact references: a deformable block compliant against its joint is shown, not judged", "[cases]") {
+    // paper case (b) in a stone 100 times softer: kn·h/E = 3e7 · 1 / 3e8 = 0.1, above 0.03
+    Scene s = shipped("paper/impact");
+    s.materials.at(size_t(s.blocks.at(size_t(s.reference->block)).material)).young = 3e8;
+    REQUIRE(cases::joint_to_block_stiffness(s, s.reference->block) == Approx(0.1).epsilon(1e-9));
+    const auto& kind = cases::case_kind("impact", s.source);
+    const auto run = synthetic_run(s, 0.5, 1e-4, still, upright);
+    cases::ContactKind deformable;
+    deformable.deformable = true;
+    int judged_rigid = 0, judged_deformable = 0;
+    for (const auto& m : kind.analyse(s, run, {true}).metrics) judged_rigid += m.judged();
+    for (const auto& m : kind.analyse(s, run, deformable).metrics) {
+        judged_deformable += m.judged();
+        CHECK_THAT(m.basis, Catch::Contains("compliant against its joint (kn·h/E = 0.1, above 0.03)"));
+    }
+    CHECK(judged_rigid > 0);
+    CHECK(judged_deformable == 0);
+}
+
 TEST_CASE("rest reference: a damped contact overshoots to mg/K(1 + e^(−πζ/√(1−ζ²))) and rings down to mg/K", "[cases]") {
     // paper case (a) with ζ = 0.05: built as the linear oscillator released just touching (its
     // dashpot never pulls on the first swing down, where the peak is read)
