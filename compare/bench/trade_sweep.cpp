@@ -163,7 +163,10 @@ double trade_error(const Scene& scene, const std::vector<Sample>& samples, bool 
     double err = 0.0;
     metric.clear();
     for (const auto& w : wanted) {
-        const auto it = std::find_if(a.metrics.begin(), a.metrics.end(), [&](const auto& m) { return m.name == w; });
+        // against the analytic answer: where dem's overlap contact is judged on its Winkler base,
+        // Housner's t1 is shown beside it, and that is the error the trade reports
+        auto it = std::find_if(a.metrics.begin(), a.metrics.end(), [&](const auto& m) { return m.name == w + " against Housner"; });
+        if (it == a.metrics.end()) it = std::find_if(a.metrics.begin(), a.metrics.end(), [&](const auto& m) { return m.name == w; });
         if (it == a.metrics.end() || !it->measured) { metric = w + " not reached"; return NAN; }
         const double e = std::abs(it->relative_error());
         if (metric.empty() || e > err) { err = e; metric = w; }
