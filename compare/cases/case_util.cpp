@@ -263,6 +263,20 @@ oracle::HousnerBlock housner_block(const Scene& scene, const Vec3& axis) {
     return {0.5 * (hi - lo), 0.5 * (zhi - zlo), gravity(scene)};
 }
 
+std::array<PlacedSide, 6> placed_sides(const BlockDef& b) {
+    const Corners w = placed_corners(b.corners, b.position, b.orientation);
+    const Vec3 centre = mass_properties(w, 1.0).centre;
+    std::array<PlacedSide, 6> out;
+    for (size_t k = 0; k < kFaceCorners.size(); ++k) {
+        const auto& f = kFaceCorners[k];
+        const Vec3 &c0 = w[size_t(f[0])], &c1 = w[size_t(f[1])], &c2 = w[size_t(f[2])], &c3 = w[size_t(f[3])];
+        Vec3 n = (c2 - c0).cross(c3 - c1).normalized();
+        if (n.dot(c0 - centre) < 0) n = -n;   // outward
+        out[k] = {n, c0};
+    }
+    return out;
+}
+
 std::function<Vec3(double)> reference_drive(const Scene& scene) {
     const int a = scene.reference->block;
     const double m = block_mass(scene, a);

@@ -1,6 +1,7 @@
 #pragma once
 /// Helpers shared by the case analyses: block mass, contact face area, signals from samples.
 
+#include <array>
 #include <functional>
 #include <string>
 #include <vector>
@@ -12,6 +13,14 @@
 #include "metrics/signal.hpp"
 
 namespace cairn::cases {
+
+/// one side of a placed block: its outward unit normal and one of its corners, world
+struct PlacedSide {
+    Vec3 normal, corner;
+};
+/// the six sides of block b where the scene places it (kFaceCorners order)
+std::array<PlacedSide, 6> placed_sides(const BlockDef& b);
+
 
 /// mass of block `b` of the scene, kg
 double block_mass(const Scene& scene, int b);

@@ -8,7 +8,6 @@
 #include "cases/case_util.hpp"
 #include "error.hpp"
 #include "geometry/hexahedron.hpp"
-#include "geometry/overlap.hpp"
 #include "output/number_format.hpp"
 
 namespace cairn::cases {
@@ -27,17 +26,11 @@ struct Plane {
 /// of the sides whose plane the block's centre of mass lies beyond, the one facing most against
 /// gravity `g` (unit); boxes are read so already (upright_frames: their frame z)
 Vec3 resting_face_normal(const BlockDef& support, const BlockDef& block, const Vec3& g) {
-    const Corners w = placed_corners(support.corners, support.position, support.orientation);
-    const Vec3 centre = mass_properties(w, 1.0).centre;
     const Vec3 on = block.position + block.orientation * mass_properties(block.corners, 1.0).centre;
     Vec3 best = -g;
     double up = -2.0;
-    for (const auto& f : kFaceCorners) {
-        const Vec3 &c0 = w[size_t(f[0])], &c1 = w[size_t(f[1])], &c2 = w[size_t(f[2])], &c3 = w[size_t(f[3])];
-        Vec3 n = (c2 - c0).cross(c3 - c1).normalized();
-        if (n.dot(c0 - centre) < 0) n = -n;   // outward
-        if (n.dot(on - c0) > 0.0 && -g.dot(n) > up) up = -g.dot(n), best = n;
-    }
+    for (const auto& side : placed_sides(support))
+        if (side.normal.dot(on - side.corner) > 0.0 && -g.dot(side.normal) > up) up = -g.dot(side.normal), best = side.normal;
     return best;
 }
 

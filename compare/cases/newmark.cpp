@@ -2,6 +2,7 @@
 // −m·a_g among them) and by gravity's part along the plane: Newmark's rigid sliding block, which
 // holds while the drive is inside the friction disk μ·n
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdio>
 
@@ -152,11 +153,13 @@ struct Footing {
     Vec3 half = Vec3::Zero();   // m, along the frame axes (the height axis's entry unused)
     double height = 0.0;        // m
     Vec3 base = Vec3::Zero();   // m, block frame
+    std::array<Vec2, 3> axes;   // the frame axes in the base's frame (t1, t2)
 };
 
 Footing footing(const Scene& scene) {
     const BlockDef& d = scene.blocks.at(size_t(scene.reference->block));
-    const Vec3 up = d.orientation.inverse() * base_plane(scene).n;   // the base's normal in the block frame
+    const Base p = base_plane(scene);
+    const Vec3 up = d.orientation.inverse() * p.n;   // the base's normal in the block frame
     Footing f;
     f.k = 0;
     for (int i = 1; i < 3; ++i)
@@ -168,6 +171,10 @@ Footing footing(const Scene& scene) {
     f.height = up[f.k] > 0.0 ? centre[f.k] - lo[f.k] : hi[f.k] - centre[f.k];
     f.base = centre;
     f.base[f.k] = up[f.k] > 0.0 ? lo[f.k] : hi[f.k];
+    for (int i = 0; i < 3; ++i) {
+        const Vec3 a = d.orientation * Vec3::Unit(i);
+        f.axes[size_t(i)] = Vec2(a.dot(p.t1), a.dot(p.t2));
+    }
     return f;
 }
 
@@ -184,14 +191,11 @@ double rocking_ratio(const Scene& scene) {
 /// the drive's ratio to n beyond which a rigid block rocks when pushed along `u` (unit, in the
 /// base's frame): the distance from the centre to the edge the push's line crosses over the
 /// height, min(a/|cos φ|, b/|sin φ|)/h for half sides a, b at φ to the push
-double rocking_ratio_along(const Scene& scene, const Footing& f, const Vec2& u) {
-    const BlockDef& d = scene.blocks.at(size_t(scene.reference->block));
-    const Base p = base_plane(scene);
-    const Vec3 w = u.x() * p.t1 + u.y() * p.t2;   // the push in the world
+double rocking_ratio_along(const Footing& f, const Vec2& u) {
     double reach = 1e300;
     for (int i = 0; i < 3; ++i) {
         if (i == f.k) continue;
-        const double c = std::abs(w.dot(d.orientation * Vec3::Unit(i)));
+        const double c = std::abs(u.dot(f.axes[size_t(i)]));
         if (c > 1e-12) reach = std::min(reach, f.half[i] / c);
     }
     return reach / f.height;
@@ -219,7 +223,7 @@ void check_drive(const Scene& scene) {
                         " m/s²): Newmark's block stays on its base and does not fly");
         const Vec2 fh(d.x(), d.y());
         if (!(fh.norm() > 0.0)) continue;
-        const double ratio = fh.norm() / n, tip = rocking_ratio_along(scene, foot, fh.normalized());
+        const double ratio = fh.norm() / n, tip = rocking_ratio_along(foot, fh.normalized());
         if (mu > tip && ratio / tip > worst) worst = ratio / tip, worst_t = t, worst_ratio = ratio, worst_tip = tip;
     }
     if (worst > 1.0)

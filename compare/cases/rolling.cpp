@@ -7,7 +7,6 @@
 #include "cases/case_kind.hpp"
 #include "error.hpp"
 #include "geometry/hexahedron.hpp"
-#include "geometry/overlap.hpp"
 #include "output/number_format.hpp"
 
 namespace cairn::cases {
@@ -111,15 +110,9 @@ const BlockDef* first_fixed(const Scene& scene) {
 
 /// the outward normal (world) of the face of block b that faces most upward (+z)
 Vec3 top_normal(const BlockDef& b) {
-    const Corners w = placed_corners(b.corners, b.position, b.orientation);
-    const Vec3 centre = mass_properties(w, 1.0).centre;
     Vec3 best = Vec3::Zero();
-    for (const auto& f : kFaceCorners) {
-        const Vec3 &c0 = w[size_t(f[0])], &c1 = w[size_t(f[1])], &c2 = w[size_t(f[2])], &c3 = w[size_t(f[3])];
-        Vec3 n = (c2 - c0).cross(c3 - c1).normalized();
-        if (n.dot(c0 - centre) < 0) n = -n;   // outward
-        if (n.z() > best.z()) best = n;
-    }
+    for (const auto& side : placed_sides(b))
+        if (side.normal.z() > best.z()) best = side.normal;
     return best;
 }
 
