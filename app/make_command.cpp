@@ -51,8 +51,8 @@ const std::map<std::string, std::vector<Param>>& generator_params() {
            "pointed (two-centred) arch: each half's centre offset from the axis as a fraction of the span 2R; 0 round"},
           {"reference", "none", Unit::choice,
            "none, or limit-analysis: a [reference] of kind arch that expects the arch to stand when a limit analysis of "
-           "its blocks at --friction finds a thrust state and, round, t/R exceeds the least t/R at which a thrust line "
-           "fits N voussoirs, else to collapse"}}},
+           "its blocks as written (straight-sided) at --friction finds a thrust state, else to collapse; a round "
+           "arch's comment gives the least t/R of N annular voussoirs beside it"}}},
         {"wall",
          {{"courses", "6", Unit::count, "courses"},
           {"bricks", "6", Unit::count, "whole bricks per course"},
