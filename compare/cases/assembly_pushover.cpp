@@ -63,6 +63,40 @@ double slip_share(const std::vector<oracle::LimitBlock>& blocks, const std::vect
 
 }  // namespace
 
+namespace {
+
+/// refuses a record that falls back within the run: the pushover reads a/g when a block turns as
+/// the multiplier that turned it, which only a load that grows and then stays holds (a pulse that
+/// has ended has a/g = 0 when its blocks fall); it may start later (`start`) and level off
+void require_ramp(const Scene& scene) {
+    const GroundMotion& gm = *scene.ground_motion;
+    const TimeSeries& a = gm.components.front().acceleration;
+    const double sign = record_sign(scene), T = scene.run.duration;
+    // the record's own samples within the run, its ends and the run's end (zero outside the record)
+    std::vector<double> at = {0.0, T};
+    for (double t : a.time)
+        for (double s : {gm.start + t, gm.start + t - 1e-12 * (1.0 + std::abs(t)), gm.start + t + 1e-12 * (1.0 + std::abs(t))})
+            if (s >= 0.0 && s <= T) at.push_back(s);
+    std::sort(at.begin(), at.end());
+    double peak = 0.0;
+    for (double t : at) peak = std::max(peak, std::abs(a.at(t - gm.start)));
+    const double g = scene.gravity.norm();
+    double last = 0.0, last_t = 0.0;
+    for (double t : at) {
+        const double v = sign * a.at(t - gm.start);
+        // 1e-9 of the peak: a record written to nine digits
+        if (v < last - 1e-9 * peak || v < -1e-9 * peak)
+            throw Error(head(scene) + "[ground_motion]: the pushover needs a ramp, a record that grows and never falls "
+                                      "back within the run, and a/g falls from " + message_number(sign * last / g) +
+                        " at t = " + message_number(last_t) + " s to " + message_number(sign * v / g) + " at t = " +
+                        message_number(t) + " s (a pulse or a record: reference.kind = \"ground_rocking\" for a block, "
+                        "a stack or a frame, or no [reference] to compare the engines with each other)");
+        if (v > last) last = v, last_t = t;
+    }
+}
+
+}  // namespace
+
 void require_pushover_drive(const Scene& scene) {
     if (!scene.ground_motion || scene.ground_motion->components.size() != 1)
         throw Error(head(scene) + "[ground_motion]: one record along a horizontal direction is needed");
@@ -76,6 +110,7 @@ void require_pushover_drive(const Scene& scene) {
     for (const auto& b : scene.blocks)
         if (!b.fixed && (b.velocity.norm() > 0.0 || b.angular_velocity.norm() > 0.0))
             throw Error(head(scene) + "blocks." + b.name + ".velocity/angular_velocity: the pushover starts at rest");
+    require_ramp(scene);
 }
 
 namespace {

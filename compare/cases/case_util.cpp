@@ -248,6 +248,16 @@ void require_tilted_release(const Scene& scene, const std::string& kind) {
         throw Error(scene.source + ": reference.kind = \"" + kind + "\": " + why);
 }
 
+void require_alone(const Scene& scene, const std::string& kind) {
+    const BlockDef& d = scene.blocks.at(size_t(scene.reference->block));
+    if (const BlockDef* other = free_block_touching(scene, d))
+        throw Error(scene.source + ": reference.kind = \"" + kind + "\": block " + d.name + " touches free block '" +
+                    other->name + "': the " + kind +
+                    " reference models one block alone on a fixed base, and a block on it, under it or beside it "
+                    "shares its loads and its slip (leave out [reference] to compare the engines with each other, or "
+                    "fix '" + other->name + "')");
+}
+
 oracle::HousnerBlock housner_block(const Scene& scene) { return housner_block(scene, rocking_axis_block(scene)); }
 
 oracle::HousnerBlock housner_block(const Scene& scene, const Vec3& axis) {

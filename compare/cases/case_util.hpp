@@ -86,6 +86,10 @@ Vec3 rocking_axis_block(const Scene& scene);
 /// kind: a rocking axis off the horizontal, or a block whose frame z does not lean θ0 from the
 /// vertical about that axis (1e-3 rad), a block on a free block, or one touched by another free block
 void require_tilted_release(const Scene& scene, const std::string& kind);
+/// refuses, naming `kind`, a reference block that another free block touches (their gap within 1 %
+/// of its height: a block on it, under it or beside it, as a brick in a wall): the single-block
+/// oracles model one block alone on a fixed base
+void require_alone(const Scene& scene, const std::string& kind);
 /// Housner's block of the reference block: half-width across the rocking axis and half-height,
 /// from its corners in the block frame
 oracle::HousnerBlock housner_block(const Scene& scene);

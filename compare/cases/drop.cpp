@@ -169,6 +169,7 @@ CaseAnalysis analyse_drop(const Scene& scene, const std::vector<Sample>& s, Cont
 void check_drop(const Scene& scene) {
     const std::string& kind = scene.reference->kind;
     require_drive_modelled(scene, kind, {});
+    require_alone(scene, kind);
     const std::string head = scene.source + ": ";
     if (kind == "rest" && scene.run.settle)
         throw Error(head + "run.settle = true: the rest reference is the paper's release just touching (case a), "

@@ -76,6 +76,7 @@ double toe_inertia(const Scene& scene) {
 /// vertical plane of the push), or a push that tips the block (held or sliding)
 void check_friction(const Scene& scene) {
     require_drive_modelled(scene, scene.reference->kind, {true, false});
+    require_alone(scene, scene.reference->kind);
     Vec3 sum = Vec3::Zero();
     for (const auto& l : scene.loads) sum += l.force;
     const Vec3 up = -scene.gravity.normalized();

@@ -227,13 +227,15 @@ void read_frame(const Scene& scene, const BlockDef& d, GroundSetup& out) {
             columns.push_back(int(i));
         } else if (std::abs(z - top) <= 0.01 * height) {
             if (beam >= 0)
-                throw refuse(scene, "blocks." + b.name + ": a frame has one beam across its columns, and '" +
-                                        scene.blocks[size_t(beam)].name + "' is one already");
+                throw refuse(scene, "blocks." + b.name + ": it and '" + scene.blocks[size_t(beam)].name +
+                                        "' both lie at the height of the top of '" + d.name +
+                                        "': the oracles model one block, a stack (each block on the one below) or a "
+                                        "frame of equal columns under one beam, not a wall or another assembly");
             beam = int(i);
         } else {
             throw refuse(scene, "blocks." + b.name + ": neither a column standing beside '" + d.name +
-                                    "' nor a beam on its top: the oracles model one block, or a frame of equal columns "
-                                    "under one beam");
+                                    "' nor a beam on its top: the oracles model one block, a stack (each block on the one "
+                                    "below) or a frame of equal columns under one beam, not a wall or another assembly");
         }
     }
     if (beam < 0 || columns.size() < 2)

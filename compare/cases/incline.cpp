@@ -69,6 +69,7 @@ double launch_speed(const Scene& scene, const Plane& p) {
 /// refuses a drive the incline oracle leaves out: loads, a record, a spin, a launch off the fall line
 void check_incline(const Scene& scene) {
     require_drive_modelled(scene, "incline", {false, true});
+    require_alone(scene, "incline");
     const BlockDef& d = scene.blocks.at(size_t(scene.reference->block));
     const Plane p = plane(scene);
     // 1e-3 of the speed: a launch typed to 3-4 digits is along the line (as the plane's angle, 1e-3 rad)

@@ -337,8 +337,10 @@ CaseAnalysis judged_newmark(const Scene& scene, const std::vector<Sample>& s, Co
     return r;
 }
 
-/// what the kind refuses before any run: check_newmark's launch, and a drive that lifts or rocks the block
+/// what the kind refuses before any run: another free block touching it, check_newmark's launch, and a
+/// drive that lifts or rocks the block
 void check_newmark_scene(const Scene& scene) {
+    require_alone(scene, "newmark");
     check_newmark(scene);
     check_drive(scene);
 }

@@ -238,17 +238,22 @@ CaseAnalysis analyse_pushover(const Scene& scene, const std::vector<Sample>& s, 
     const double lambda_winkler = std::isnan(t_winkler) ? NAN : ground_multiplier(scene, t_winkler);
     const double peak = contact.penalty ? stack.winkler_multiplier(scene.contact.kn) : NAN;
 
+    // the lag behind the quasi-static value, where the oracle turns that far within the run
+    auto lag = [](double d) {
+        return std::isnan(d) ? std::string(" (under this ramp it does not turn that far within the run)")
+                             : " plus the ramp's lag " + fixed4(d);
+    };
     CaseAnalysis r;
     r.measured = rotation_series(s, free_index(scene, scene.reference->block));
     r.quantity = "rotation of " + scene.blocks[scene.reference->block].name + ", rad";
     const std::string name = "a/g when the top turns " + fixed4(threshold) + " rad";
     const std::string rigid_basis =
         "the layers above the critical bed joint as one rigid body about its edge under the scene's ramp (RK4): B/H = " +
-        fixed4(quasi_static) + " plus the ramp's lag " + fixed4(lambda_rigid - quasi_static);
+        fixed4(quasi_static) + lag(lambda_rigid - quasi_static);
     const std::string winkler_basis =
         "the stack on no-tension Winkler bed joints of modulus kn (dem's overlap contact): the monolith's rocking "
         "equation with the joints' quasi-static multiplier in place of the rigid one, under the scene's ramp (RK4): "
-        "its peak " + fixed4(peak) + " plus the ramp's lag " + fixed4(lambda_winkler - peak) +
+        "its peak " + fixed4(peak) + lag(lambda_winkler - peak) +
         "; 2 % (the path's mechanism taken as one degree of freedom; shear springs and block strains left out)";
     const double lambda_ref = winkler ? lambda_winkler : lambda_rigid;
     const std::string basis = winkler ? winkler_basis : rigid_basis + "; 2 %";

@@ -138,6 +138,7 @@ Quat slope_frame(const Scene& scene) {
 /// under gravity along −z; `scene` is in the oracle's frame (slope_frame)
 static void check_rolling(const Scene& scene) {
     require_drive_modelled(scene, "rolling", {false, true});
+    require_alone(scene, "rolling");
     const std::string head = scene.source + ": reference.kind = \"rolling\": ";
     const BlockDef* b = first_fixed(scene);
     if (!b) throw Error(head + "no fixed block to roll down");

@@ -240,3 +240,41 @@ TEST_CASE("assembly pushover: the blocks' order does not choose between mechanis
     CHECK(b.slip_share <= 0.05);
     CHECK(b.mass == Approx(a.mass).epsilon(1e-6));
 }
+
+TEST_CASE("pushover: a record that falls back within the run is refused; a ramp that levels off is judged",
+          "[compare][pushover]") {
+    const auto& kind = cases::case_kind("pushover", "test");
+    auto with_record = [](std::vector<double> time, std::vector<double> g_units, double duration) {
+        Scene s = column(Vec3::UnitX(), 0.01, duration);
+        auto& a = s.ground_motion->components.front().acceleration;
+        a.time = std::move(time);
+        a.value.clear();
+        for (double v : g_units) a.value.push_back(9.81 * v);
+        return s;
+    };
+    CHECK_NOTHROW(kind.check(column(Vec3::UnitX(), 0.01, 40.0)));
+    // levelling off, or written negative (a push against `direction`), is still a ramp
+    CHECK_NOTHROW(kind.check(with_record({0.0, 5.0, 20.0}, {0.0, 0.3, 0.3}, 10.0)));
+    CHECK_NOTHROW(kind.check(with_record({0.0, 20.0}, {0.0, -0.3}, 10.0)));
+    // a one-sine pulse: its blocks turn after a/g has fallen back to 0, which the pushover would
+    // read as the multiplier that turned them (measured: an arch collapsed by a 0.25 g pulse on
+    // every engine, each marked "miss: a/g 0 at 0.05 rad")
+    CHECK_THROWS_WITH(kind.check(with_record({0.0, 0.5, 1.0}, {0.0, 0.3, 0.0}, 3.0)),
+                      Catch::Contains("the pushover needs a ramp") && Catch::Contains("falls from 0.3 at t = 0.5 s"));
+    // a ramp that ends inside the run drops to zero there
+    CHECK_THROWS_WITH(kind.check(with_record({0.0, 5.0}, {0.0, 0.3}, 10.0)),
+                      Catch::Contains("falls from 0.3 at t = 5 s to 0"));
+}
+
+TEST_CASE("pushover: a ramp too weak to turn the stack says so, with no 'nan' in its basis", "[compare][pushover]") {
+    // 0.01 g/s for 10 s: a/g reaches 0.1, below B/H = 0.2667 of three 0.4 × 0.4 × 0.5 m drums
+    const Scene low = column(Vec3::UnitX(), 0.01, 10.0);
+    const auto& kind = cases::case_kind("pushover", "test");
+    for (const cases::ContactKind contact : {cases::ContactKind{false}, cases::ContactKind{true}}) {
+        const auto r = kind.analyse(low, run(low, 0.02, [](double) { return 0.0; }), contact);
+        REQUIRE(!r.metrics.empty());
+        for (const auto& m : r.metrics) CHECK(m.basis.find("nan") == std::string::npos);
+        CHECK(r.metrics.front().basis.find("does not turn that far within the run") != std::string::npos);
+        CHECK(std::string(r.metrics.front().verdict()) == "pass");
+    }
+}

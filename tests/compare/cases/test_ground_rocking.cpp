@@ -388,6 +388,17 @@ TEST_CASE("ground_rocking: what is not a frame of equal columns under one beam i
         x.blocks.push_back(b);
         says(x, "blocks.loose: neither a column");
     }
+    // a second block at the lintel's height (a wall's next course is two or more): named, and the
+    // refusal says what the oracles model
+    {
+        Scene x = frame();
+        BlockDef b = x.blocks[size_t(x.block_index("L"))];
+        b.name = "L2";
+        b.position.y() += 1.0;
+        x.blocks.push_back(b);
+        says(x, "blocks.L2: it and 'L' both lie at the height of the top of 'P1'");
+        says(x, "a stack (each block on the one below) or a frame of equal columns under one beam, not a wall");
+    }
     // a push on the lintel alone: the frame is no longer shaken alike
     {
         Scene x = frame();
