@@ -45,6 +45,7 @@ void ContactSet::refresh(std::vector<Block>& blocks) {
         for (size_t i = 0; i < blocks.size(); ++i) frames_[i] = SideFrames::of(blocks[i]);
     }
     PairGeometry g;
+    g.ties = &ties_;
     slots_.clear();
     widened_.assign(prune ? blocks.size() : 0, 0);
     for (auto [i, j] : pairs_) {
@@ -129,6 +130,7 @@ ContactTotals ContactSet::apply(std::vector<Block>& blocks, double dt) {
     } else {
         evaluate(blocks, dt, 0, count, keep_forces_);
     }
+    if (law_.scheme == ContactScheme::overlap) remember_ties(blocks);
     // spread the kept forces and add up, in the candidates' order
     ContactTotals tot;
     events_.clear();
@@ -151,6 +153,26 @@ ContactTotals ContactSet::apply(std::vector<Block>& blocks, double dt) {
         }
     }
     return tot;
+}
+
+void ContactSet::remember_ties(const std::vector<Block>& blocks) {
+    // the ties in the candidates' order; sorted again only when they changed (a wall at rest: never)
+    tie_scratch_.clear();
+    for (const auto& c : candidates_) {
+        const int hit_side = blocks[size_t(c.hit_block)].mesh.face_side[size_t(c.hit_face)];
+        int last = -1;   // a face's sub-contacts mostly share their target side: each side once
+        for (const auto& a : c.subs) {   // the sub-contacts in contact now
+            const int target_side = blocks[size_t(c.target_block)].mesh.face_side[size_t(a.target_face)];
+            if (target_side == last) continue;
+            last = target_side;
+            if (tie_by_geometry(blocks, c.hit_block, hit_side, c.target_block, target_side))
+                tie_scratch_.push_back({c.hit_block, hit_side, c.target_block, target_side});
+        }
+    }
+    if (tie_scratch_ == tie_order_) return;
+    tie_order_.swap(tie_scratch_);
+    ties_.kept = tie_order_;
+    ties_.index(blocks.size());
 }
 
 void ContactSet::evaluate(std::vector<Block>& blocks, double dt, long begin, long end, bool keep_forces) {

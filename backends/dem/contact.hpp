@@ -7,6 +7,7 @@
 /// - paper: the paper's node-to-face rule on a grid of hitting points, each with a penalty normal
 ///   force and a shear spring from a stick anchor in the target face's natural coordinates.
 
+#include <array>
 #include <limits>
 #include <utility>
 #include <vector>
@@ -206,6 +207,8 @@ private:
     void evaluate_paper(std::vector<Block>& blocks, double dt, long begin, long end, bool keep_forces);
     /// the overlap scheme on candidates [begin, end)
     void evaluate_overlap(std::vector<Block>& blocks, double dt, long begin, long end, bool keep_forces);
+    /// overlap scheme: the ties by geometry in contact after this evaluation keep their roles
+    void remember_ties(const std::vector<Block>& blocks);
 
     ContactLaw law_;
     double margin_ = 0.0;
@@ -213,6 +216,8 @@ private:
     bool prune_ = true;
     bool slip_ = true;
     std::vector<Candidate> candidates_;
+    TieMemory ties_;                   // overlap scheme: the ties in contact at the last evaluation
+    std::vector<std::array<int, 4>> tie_order_, tie_scratch_;   // the same in the candidates' order, and the next
     std::vector<EventForce> events_;
     std::vector<SideFrames> frames_;   // every block's side frames of this step
     // buffers kept between refreshes so that a steady state allocates nothing

@@ -35,7 +35,7 @@ namespace {
 
 // the target rule with the two sides' outward normals at hand (only the last tie needs them)
 bool is_target_given(const std::vector<Block>& blocks, int h, int hit_side, int t, int target_side, const Vec3& nh,
-                     const Vec3& nt) {
+                     const Vec3& nt, const TieMemory* ties = nullptr) {
     double ah = blocks[h].side_area[hit_side], at = blocks[t].side_area[target_side];
     double tol = 1e-9 * std::max(ah, at);
     if (at > ah + tol) return true;
@@ -43,6 +43,8 @@ bool is_target_given(const std::vector<Block>& blocks, int h, int hit_side, int 
     if (blocks[t].fixed != blocks[h].fixed) return blocks[t].fixed;
     double vt = blocks[t].volume, vh = blocks[h].volume;
     if (std::abs(vt - vh) > 1e-9 * std::max(vt, vh)) return vt > vh;
+    // a tie in contact keeps the roles it took at first touch
+    if (const int role = ties ? ties->role(h, hit_side, t, target_side) : 0) return role > 0;
     // equal sides of equal blocks: by geometry, never by index or name. m = n_t − n_h changes
     // sign when the two swap; its first component along z, x, y of at least half its length
     // decides (the lower block of a stack is the target; side by side, the one on the −x side)
@@ -55,13 +57,42 @@ bool is_target_given(const std::vector<Block>& blocks, int h, int hit_side, int 
 
 }  // namespace
 
+int TieMemory::role(int h, int hs, int t, int ts) const {
+    // a block's few entries scanned (a brick in a wall touches some ten others)
+    auto has = [&](int a, int as, int b, int bs) {
+        if (a < 0 || size_t(a) + 1 >= first.size()) return false;
+        for (int i = first[size_t(a)]; i < first[size_t(a) + 1]; ++i) {
+            const auto& k = kept[size_t(i)];
+            if (k[1] == as && k[2] == b && k[3] == bs) return true;
+        }
+        return false;
+    };
+    if (kept.empty()) return 0;
+    if (has(h, hs, t, ts)) return 1;
+    if (has(t, ts, h, hs)) return -1;
+    return 0;
+}
+
+void TieMemory::index(size_t blocks) {
+    std::sort(kept.begin(), kept.end());
+    kept.erase(std::unique(kept.begin(), kept.end()), kept.end());
+    first.assign(blocks + 1, 0);
+    for (const auto& k : kept) ++first[size_t(k[0]) + 1];
+    for (size_t b = 0; b < blocks; ++b) first[b + 1] += first[b];
+}
+
+bool tie_by_geometry(const std::vector<Block>& blocks, int h, int hit_side, int t, int target_side) {
+    const double ah = blocks[h].side_area[hit_side], at = blocks[t].side_area[target_side];
+    const double vt = blocks[t].volume, vh = blocks[h].volume;
+    return std::abs(at - ah) <= 1e-9 * std::max(ah, at) && blocks[t].fixed == blocks[h].fixed &&
+           std::abs(vt - vh) <= 1e-9 * std::max(vt, vh);
+}
+
 bool may_be_target(const std::vector<Block>& blocks, int h, int hit_side, int t, int target_side, const Vec3& nh,
-                   const Vec3& nt, double turn) {
-    double ah = blocks[h].side_area[hit_side], at = blocks[t].side_area[target_side];
-    double tol = 1e-9 * std::max(ah, at);
-    double vt = blocks[t].volume, vh = blocks[h].volume;
-    const bool by_geometry = std::abs(at - ah) <= tol && blocks[t].fixed == blocks[h].fixed &&
-                             std::abs(vt - vh) <= 1e-9 * std::max(vt, vh);
+                   const Vec3& nt, double turn, const TieMemory* ties) {
+    const bool by_geometry = tie_by_geometry(blocks, h, hit_side, t, target_side);
+    // a kept tie is the target until its sides part; then the geometric rule's bound below holds
+    if (by_geometry && ties && ties->role(h, hit_side, t, target_side) > 0) return true;
     const bool rule = is_target_given(blocks, h, hit_side, t, target_side, nh, nt);
     if (rule || !by_geometry) return rule;   // areas, fixed and volumes do not change
     // the geometric rule said no: it holds as long as each component of m = n_t − n_h (each
@@ -135,7 +166,7 @@ const std::array<char, 6>& PairGeometry::faces(int f) {
     // a side within 1e-3 rad of perpendicular casts a shadow under 1e-3 of its height: left out,
     // so that rounding never makes a side standing on the target a hitting side
     for (int s = 0; s < 6; ++s)
-        row[size_t(s)] = nh.dot(normal[s]) < -1e-3 && is_target_given(*blocks_, hit, f, target, s, nh, normal[s]);
+        row[size_t(s)] = nh.dot(normal[s]) < -1e-3 && is_target_given(*blocks_, hit, f, target, s, nh, normal[s], ties);
     return row;
 }
 

@@ -18,8 +18,30 @@ struct SideFrames {
     static SideFrames of(const Block& b);
 };
 
+/// The target rule's ties by geometry held through a contact: equal sides of equal blocks that
+/// touch keep the roles they took when they first touched, until they part (docs/dem.md, "Which
+/// side is the target"). Where the two sides meet at an angle the two directions' overlap
+/// integrals differ, and a swap in contact made or lost their difference in one step (a voussoir
+/// hinged 19° open on its neighbour lost 14 J of spring energy as the rule's deciding axis
+/// changed from z to x).
+struct TieMemory {
+    /// (hitting block, its side, target block, its side) of every tie in contact, sorted
+    std::vector<std::array<int, 4>> kept;
+    /// per block b, its entries as hitting block: kept[first[b]] up to kept[first[b + 1]]
+    std::vector<int> first;
+    /// +1: side hs of block h hits side ts of block t; −1: the reverse; 0: not kept
+    int role(int h, int hs, int t, int ts) const;
+    /// sort `kept` and index it by hitting block, for `blocks` blocks
+    void index(size_t blocks);
+};
+
+/// true when sides `hit_side` of block h and `target_side` of block t tie on area, fixity and
+/// volume, so that the target rule decides between them by geometry
+bool tie_by_geometry(const std::vector<Block>& blocks, int h, int hit_side, int t, int target_side);
+
 /// The sides of a (hitting, target) block pair for one step.
 struct PairGeometry {
+    const TieMemory* ties = nullptr; ///< ties kept through a contact (none: the geometric rule alone)
     std::array<Vec3, 6> normal;      ///< target sides' outward unit normals
     std::array<Vec3, 6> centre;      ///< target sides' centres, m
     std::array<int, 6> best_side{};  ///< paper scheme, per target side: the hitting block's side most opposed to it (-1: none)
@@ -78,7 +100,7 @@ private:
 /// block t is not the target of side `hit_side` of block h for any outward normals within `turn`
 /// (rad, small) of nh and nt (the rule's geometric tie-break is the only part that can change)
 bool may_be_target(const std::vector<Block>& blocks, int h, int hit_side, int t, int target_side, const Vec3& nh,
-                   const Vec3& nt, double turn);
+                   const Vec3& nt, double turn, const TieMemory* ties = nullptr);
 
 /// damping coefficients per unit contact area (N·s/m³) of the normal and the shear dashpots
 std::array<double, 2> dashpot_per_area(const ContactLaw& law, const Block& hb, const Block& tb, int hit_side);

@@ -99,7 +99,7 @@ bool may_act(const std::vector<Block>& blocks, const std::vector<SideFrames>& fr
     for (int s = 0; s < 6; ++s) {
         const Vec3& ns = g.normal[size_t(s)];
         if (!(nh.dot(ns) < -1e-3 + turn)) continue;
-        if (!may_be_target(blocks, h, hit_side, t, s, nh, ns, turn)) continue;
+        if (!may_be_target(blocks, h, hit_side, t, s, nh, ns, turn, g.ties)) continue;
         const int side_count = side_constraints(g, s, nh, true, cons, &hq, nullptr, reach);
         if (missed(0, side_count)) continue;   // the side's planes first: most faces stop here
         int nc = side_count;

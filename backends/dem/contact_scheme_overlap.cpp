@@ -36,6 +36,7 @@ struct SideRule {
 
 void ContactSet::evaluate_overlap(std::vector<Block>& blocks, double dt, long begin, long end, bool keep_forces) {
     PairGeometry g;
+    g.ties = &ties_;
     const int n = std::clamp(law_.subdivision, 1, kMaxSubdivision);
     std::array<Vec3, (kMaxSubdivision + 1) * (kMaxSubdivision + 1)> grid;   // sub-cell corners
     std::array<SideRule, 1 << kMaxBlend> rules;

@@ -129,3 +129,18 @@ TEST_CASE("dem overlap contact: a box target's face is bounded by its neighbours
     for (size_t i = 0; i < with.size(); ++i) CHECK((with[i] - without[i]).norm() < 1e-12 * total.norm());
     CHECK(stored_with == Approx(stored_without).epsilon(1e-12));
 }
+
+TEST_CASE("tie memory: a kept tie names its hitting side, the reverse its target, any other pair nothing", "[dem][contact]") {
+    dem::TieMemory m;
+    CHECK(m.role(0, 5, 1, 4) == 0);   // empty: the geometric rule decides
+    m.kept = {{2, 1, 0, 3}, {0, 5, 1, 4}, {0, 5, 1, 4}, {1, 2, 2, 0}};
+    m.index(3);
+    REQUIRE(m.kept.size() == 3);   // sorted, each once
+    CHECK(m.role(0, 5, 1, 4) == 1);
+    CHECK(m.role(1, 4, 0, 5) == -1);
+    CHECK(m.role(2, 1, 0, 3) == 1);
+    CHECK(m.role(0, 3, 2, 1) == -1);
+    CHECK(m.role(0, 4, 1, 4) == 0);   // another side of block 0
+    CHECK(m.role(0, 5, 2, 4) == 0);   // another block
+    CHECK(m.role(7, 5, 1, 4) == 0);   // a block past the index
+}

@@ -241,7 +241,7 @@ TEST_CASE("assembly pushover: the blocks' order does not choose between mechanis
     CHECK(b.mass == Approx(a.mass).epsilon(1e-6));
 }
 
-TEST_CASE("pushover: a record that falls back within the run is refused; a ramp that levels off is judged",
+TEST_CASE("pushover: a record that falls back within the run is refused, a ramp that levels off is judged",
           "[compare][pushover]") {
     const auto& kind = cases::case_kind("pushover", "test");
     auto with_record = [](std::vector<double> time, std::vector<double> g_units, double duration) {
