@@ -19,8 +19,8 @@ struct SideFrames {
 };
 
 /// The target rule's ties by geometry held through a contact: equal sides of equal blocks that
-/// touch keep the roles they took when they first touched, until they part (docs/dem.md, "Which
-/// side is the target"). Where the two sides meet at an angle the two directions' overlap
+/// touch keep the roles they took when they first touched, until they part (docs/dem.md, the
+/// choice of sides). Where the two sides meet at an angle the two directions' overlap
 /// integrals differ, and a swap in contact made or lost their difference in one step (a voussoir
 /// hinged 19° open on its neighbour lost 14 J of spring energy as the rule's deciding axis
 /// changed from z to x).

@@ -61,10 +61,6 @@ double slip_share(const std::vector<oracle::LimitBlock>& blocks, const std::vect
     return fastest > 0.0 ? slip / fastest : 0.0;
 }
 
-}  // namespace
-
-namespace {
-
 /// refuses a record that falls back within the run: the pushover reads a/g when a block turns as
 /// the multiplier that turned it, which only a load that grows and then stays holds (a pulse that
 /// has ended has a/g = 0 when its blocks fall); it may start later (`start`) and level off
@@ -74,9 +70,11 @@ void require_ramp(const Scene& scene) {
     const double sign = record_sign(scene), T = scene.run.duration;
     // the record's own samples within the run, its ends and the run's end (zero outside the record)
     std::vector<double> at = {0.0, T};
-    for (double t : a.time)
-        for (double s : {gm.start + t, gm.start + t - 1e-12 * (1.0 + std::abs(t)), gm.start + t + 1e-12 * (1.0 + std::abs(t))})
+    for (double t : a.time) {
+        const double eps = 1e-12 * (1.0 + std::abs(t));   // either side of a sample: a step there
+        for (double s : {gm.start + t - eps, gm.start + t, gm.start + t + eps})
             if (s >= 0.0 && s <= T) at.push_back(s);
+    }
     std::sort(at.begin(), at.end());
     double peak = 0.0;
     for (double t : at) peak = std::max(peak, std::abs(a.at(t - gm.start)));
