@@ -156,7 +156,9 @@ ContactTotals ContactSet::apply(std::vector<Block>& blocks, double dt) {
 }
 
 void ContactSet::remember_ties(const std::vector<Block>& blocks) {
-    // the ties in the candidates' order; sorted again only when they changed (a wall at rest: never)
+    // the ties in the candidates' order; sorted again only when they changed (a wall at rest: never).
+    // Only those near the rule's switch, or kept already, need keeping: away from it the rule gives
+    // the role it gave at first touch, so the memory stays small (empty for a wall at rest)
     tie_scratch_.clear();
     for (const auto& c : candidates_) {
         const int hit_side = blocks[size_t(c.hit_block)].mesh.face_side[size_t(c.hit_face)];
@@ -165,7 +167,10 @@ void ContactSet::remember_ties(const std::vector<Block>& blocks) {
             const int target_side = blocks[size_t(c.target_block)].mesh.face_side[size_t(a.target_face)];
             if (target_side == last) continue;
             last = target_side;
-            if (tie_by_geometry(blocks, c.hit_block, hit_side, c.target_block, target_side))
+            if (!tie_by_geometry(blocks, c.hit_block, hit_side, c.target_block, target_side)) continue;
+            const Vec3& nh = frames_[size_t(c.hit_block)].normal[size_t(hit_side)];
+            const Vec3& nt = frames_[size_t(c.target_block)].normal[size_t(target_side)];
+            if (near_tie_switch(nh, nt) || ties_.role(c.hit_block, hit_side, c.target_block, target_side) != 0)
                 tie_scratch_.push_back({c.hit_block, hit_side, c.target_block, target_side});
         }
     }

@@ -88,6 +88,14 @@ bool tie_by_geometry(const std::vector<Block>& blocks, int h, int hit_side, int 
            std::abs(vt - vh) <= 1e-9 * std::max(vt, vh);
 }
 
+bool near_tie_switch(const Vec3& nh, const Vec3& nt) {
+    const Vec3 m = nt - nh;
+    const double half = 0.5 * m.norm();
+    for (int a = 0; a < 3; ++a)
+        if (std::abs(std::abs(m[a]) - half) < 0.1 * half) return true;
+    return false;
+}
+
 bool may_be_target(const std::vector<Block>& blocks, int h, int hit_side, int t, int target_side, const Vec3& nh,
                    const Vec3& nt, double turn, const TieMemory* ties) {
     const bool by_geometry = tie_by_geometry(blocks, h, hit_side, t, target_side);

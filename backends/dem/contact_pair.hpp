@@ -39,6 +39,11 @@ struct TieMemory {
 /// volume, so that the target rule decides between them by geometry
 bool tie_by_geometry(const std::vector<Block>& blocks, int h, int hit_side, int t, int target_side);
 
+/// true when the geometric rule for sides of outward normals nh (hitting) and nt (target) is near
+/// its switch: it flips only where a component of m = n_t − n_h crosses half of |m|, and one lies
+/// within a tenth of that (a pair turns far less in a step). Ties are kept from there on
+bool near_tie_switch(const Vec3& nh, const Vec3& nt);
+
 /// The sides of a (hitting, target) block pair for one step.
 struct PairGeometry {
     const TieMemory* ties = nullptr; ///< ties kept through a contact (none: the geometric rule alone)
